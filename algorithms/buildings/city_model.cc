@@ -1,0 +1,93 @@
+#include "algorithms/buildings/city_model.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+namespace roofsweep {
+
+const char* SurfaceTypeName(SurfaceType t) {
+  switch (t) {
+    case SurfaceType::kRoof: return "RoofSurface";
+    case SurfaceType::kWall: return "WallSurface";
+    case SurfaceType::kGround: return "GroundSurface";
+    case SurfaceType::kClosure: return "ClosureSurface";
+  }
+  return "?";
+}
+
+const char* RoofTypeName(int code) {
+  switch (code) {
+    case roof_type::kFlat: return "flat";
+    case roof_type::kMonopitch: return "monopitch";
+    case roof_type::kDualPent: return "dual-pent";
+    case roof_type::kGabled: return "gabled";
+    case roof_type::kHipped: return "hipped";
+    case roof_type::kHalfHipped: return "half-hipped";
+    case roof_type::kMansard: return "mansard";
+    case roof_type::kPavilion: return "pavilion";
+    case roof_type::kCone: return "cone";
+    case roof_type::kCupola: return "cupola";
+    case roof_type::kSawtooth: return "sawtooth";
+    case roof_type::kArch: return "arch";
+    case roof_type::kPyramidalBroach: return "pyramidal-broach";
+    case roof_type::kCombination: return "combination";
+    default: return "unknown";
+  }
+}
+
+namespace {
+Eigen::Vector3d NewellSum(const std::vector<Eigen::Vector3d>& ring) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i) n += ring[i].cross(ring[(i + 1) % m]);
+  return n;  // twice the vector area
+}
+}  // namespace
+
+Eigen::Vector3d Polygon3::Normal() const {
+  const Eigen::Vector3d n = NewellSum(exterior);
+  const double len = n.norm();
+  return len > 0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+}
+
+double Polygon3::Area() const {
+  const Eigen::Vector3d n = Normal();
+  double a = 0.5 * n.dot(NewellSum(exterior));
+  for (const auto& h : holes) a -= std::abs(0.5 * n.dot(NewellSum(h)));
+  return a;
+}
+
+double Building::GroundZ() const {
+  double z = std::numeric_limits<double>::infinity();
+  for (const auto& s : surfaces)
+    if (s.type == SurfaceType::kGround)
+      for (const auto& p : s.polygons)
+        for (const auto& v : p.exterior) z = std::min(z, v.z());
+  return std::isinf(z) ? std::numeric_limits<double>::quiet_NaN() : z;
+}
+
+double Building::RoofTopZ() const {
+  double z = -std::numeric_limits<double>::infinity();
+  for (const auto& s : surfaces)
+    if (s.type == SurfaceType::kRoof)
+      for (const auto& p : s.polygons)
+        for (const auto& v : p.exterior) z = std::max(z, v.z());
+  return std::isinf(z) ? std::numeric_limits<double>::quiet_NaN() : z;
+}
+
+Eigen::Matrix<double, 6, 1> CityModel::Bounds() const {
+  const double inf = std::numeric_limits<double>::infinity();
+  Eigen::Matrix<double, 6, 1> b;
+  b << inf, inf, inf, -inf, -inf, -inf;
+  for (const auto& bl : buildings)
+    for (const auto& s : bl.surfaces)
+      for (const auto& p : s.polygons)
+        for (const auto& v : p.exterior) {
+          b.head<3>() = b.head<3>().cwiseMin(v);
+          b.tail<3>() = b.tail<3>().cwiseMax(v);
+        }
+  return b;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,81 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace roofsweep {
+
+// The LoD2 city model every stage hands on: reconstruction produces it, the
+// simulator's ground truth is one, the writers (CityGML, CityJSON, GPKG)
+// serialise it and the evaluator compares two of them.
+
+enum class SurfaceType { kRoof, kWall, kGround, kClosure };
+const char* SurfaceTypeName(SurfaceType t);  // "RoofSurface", "WallSurface", ...
+
+// A planar polygon. Rings do not repeat their first vertex. The exterior
+// ring is counter-clockwise seen from outside the solid (right-hand rule
+// gives the outward normal), holes clockwise.
+struct Polygon3 {
+  std::vector<Eigen::Vector3d> exterior;
+  std::vector<std::vector<Eigen::Vector3d>> holes;
+
+  // Newell normal of the exterior ring (unit; zero for a degenerate ring).
+  Eigen::Vector3d Normal() const;
+  // Area of the polygon (exterior minus holes), m².
+  double Area() const;
+};
+
+struct Surface {
+  SurfaceType type = SurfaceType::kRoof;
+  std::string id;  // optional, kept through round trips
+  std::vector<Polygon3> polygons;
+};
+
+// SIG3D/AdV roof type codes used by CityGML bldg:roofType.
+namespace roof_type {
+constexpr int kUnknown = 0;
+constexpr int kFlat = 1000;
+constexpr int kMonopitch = 1010;  // shed
+constexpr int kDualPent = 1020;
+constexpr int kGabled = 1030;
+constexpr int kHipped = 1040;
+constexpr int kHalfHipped = 1050;
+constexpr int kMansard = 1060;
+constexpr int kPavilion = 1070;  // pyramid
+constexpr int kCone = 1080;
+constexpr int kCupola = 1090;
+constexpr int kSawtooth = 1100;
+constexpr int kArch = 1110;
+constexpr int kPyramidalBroach = 1120;
+constexpr int kCombination = 1130;
+}  // namespace roof_type
+const char* RoofTypeName(int code);  // "gabled", ...; "unknown" for 0 or unlisted
+
+struct Building {
+  std::string id;  // a valid xs:ID (starts with a letter)
+  std::vector<Surface> surfaces;
+  int roof_type = roof_type::kUnknown;
+  double measured_height = 0;  // m, ground to highest roof point; 0 unknown
+  // Generic attributes (quality figures, source ids): written as gen:* in
+  // CityGML, attributes in CityJSON and fields in GeoPackage.
+  std::map<std::string, double> double_attributes;
+  std::map<std::string, std::string> string_attributes;
+
+  // Lowest ground z and highest roof z (NaN when there are none).
+  double GroundZ() const;
+  double RoofTopZ() const;
+};
+
+// A set of buildings in one coordinate system: the block CRS when written
+// or read, the local frame inside the pipeline.
+struct CityModel {
+  std::string crs;  // as given ("EPSG:25833"); empty: local/unknown
+  std::vector<Building> buildings;
+
+  // Axis-aligned bounds of all vertices: (min x, min y, min z, max x, max y, max z).
+  Eigen::Matrix<double, 6, 1> Bounds() const;
+};
+
+}  // namespace roofsweep

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace roofsweep {
+
+struct ImageInfo {
+  int width = 0;
+  int height = 0;
+  int bands = 0;
+  int bits = 8;           // bits per sample (8, 16, 32)
+  std::string data_type;  // GDAL name: Byte, UInt16, Float32, ...
+  std::string driver;     // GDAL short name: GTiff, JPEG, PNG, ...
+};
+
+// Reads the header only. Throws roofsweep::Error "PATH: ..." when the file
+// is missing or GDAL cannot read it.
+ImageInfo ProbeImage(const std::string& path);
+
+// Reads the whole image as float32 in [0, 1]: CV_32FC3 in R, G, B order for
+// colour images (the first three bands of 3+ band images), CV_32FC1 for grey
+// ones. 16-bit data is scaled by its declared bit depth (NBITS) or 65535.
+// Palette images are expanded. Throws on corrupt or truncated data.
+cv::Mat ReadImage(const std::string& path);
+
+// Writes an 8-bit RGB (CV_8UC3, R, G, B order) or grey image through GDAL;
+// the format follows the extension (.tif GeoTIFF tiled/deflate, .jpg JPEG
+// quality `jpeg_quality`, .png PNG). Atomic: temporary name + rename.
+void WriteImage(const std::string& path, const cv::Mat& rgb8, int jpeg_quality = 90);
+
+}  // namespace roofsweep
