@@ -1,0 +1,88 @@
+#include "algorithms/geometry/block_overview.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "algorithms/geometry/rotation.h"
+
+namespace roofsweep {
+namespace {
+
+// A strip of nadir images 1000 px wide, f = 1000 px, 500 m above ground:
+// GSD 0.5 m, footprint 500 m; centres 200 m apart => 60% forward overlap.
+Block NadirStrip(int n, double spacing) {
+  Block b;
+  Camera c;
+  c.id = "c";
+  c.width = c.height = 1000;
+  c.fx = c.fy = 1000;
+  c.cx = c.cy = 500;
+  b.cameras.push_back(c);
+  b.ground.height = 0;
+  for (int i = 0; i < n; ++i) {
+    View v;
+    v.name = "img" + std::to_string(i);
+    v.camera = 0;
+    v.pose.R = PatbToCv(OpkToRotation(0, 0, 0));
+    v.pose.C = {i * spacing, 0, 500};
+    b.views.push_back(v);
+  }
+  return b;
+}
+
+TEST(BlockOverview, NadirStripGsdAndOverlap) {
+  const BlockOverview o = AnalyzeBlock(NadirStrip(3, 200));
+  ASSERT_EQ(o.footprints.size(), 3u);
+  EXPECT_TRUE(o.plane_is_ground);
+  for (const auto& fp : o.footprints) {
+    EXPECT_NEAR(fp.gsd_m, 0.5, 1e-6);
+    EXPECT_NEAR(fp.area_m2, 500.0 * 500.0, 1.0);
+    EXPECT_NEAR(fp.off_nadir_deg, 0.0, 1e-6);
+  }
+  // 0-1 and 1-2 overlap 60%, 0-2 20%.
+  ASSERT_EQ(o.overlaps.size(), 3u);
+  EXPECT_NEAR(o.overlaps[0].fraction, 0.6, 1e-3);
+  EXPECT_NEAR(o.overlaps[1].fraction, 0.2, 1e-3);
+  EXPECT_NEAR(o.overlaps[2].fraction, 0.6, 1e-3);
+  EXPECT_TRUE(o.warnings.empty());
+}
+
+TEST(BlockOverview, WarnsAboutIsolatedImageAndCameraBelowGround) {
+  Block b = NadirStrip(3, 200);
+  b.views[2].pose.C.x() = 5000;  // far away
+  b.views[1].pose.C.z() = -10;
+  const BlockOverview o = AnalyzeBlock(b);
+  bool isolated = false, below = false;
+  for (const auto& w : o.warnings) {
+    isolated |= w.find("'img2' overlaps no other") != std::string::npos;
+    below |= w.find("'img1': camera is below the ground") != std::string::npos;
+  }
+  EXPECT_TRUE(isolated);
+  EXPECT_TRUE(below);
+}
+
+TEST(BlockOverview, ConvergentViewsWithoutGroundUseScenePlane) {
+  Block b = NadirStrip(2, 0);
+  b.ground = GroundModel{};
+  // Two cameras 10 m apart looking at the origin from 20 m.
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Vector3d C(i ? 5 : -5, 0, 20);
+    const Eigen::Vector3d z = (-C).normalized();
+    const Eigen::Vector3d x = Eigen::Vector3d::UnitY().cross(z).normalized();
+    const Eigen::Vector3d y = z.cross(x);
+    b.views[i].pose.R.row(0) = x;
+    b.views[i].pose.R.row(1) = y;
+    b.views[i].pose.R.row(2) = z;
+    b.views[i].pose.C = C;
+  }
+  const BlockOverview o = AnalyzeBlock(b);
+  EXPECT_FALSE(o.plane_is_ground);
+  // The scene plane passes through the origin; GSD ~ distance / f.
+  EXPECT_NEAR(o.footprints[0].gsd_m, std::sqrt(425.0) / 1000.0, 2e-3);
+  ASSERT_EQ(o.overlaps.size(), 1u);
+  EXPECT_GT(o.overlaps[0].fraction, 0.5);
+}
+
+}  // namespace
+}  // namespace roofsweep
