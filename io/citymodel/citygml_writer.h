@@ -1,0 +1,54 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <unordered_set>
+
+#include "io/citymodel/citymodel_writer.h"
+#include "io/citymodel/output_file.h"
+
+typedef struct _xmlTextWriter* xmlTextWriterPtr;
+
+namespace roofsweep {
+
+// Streams CityGML 2.0 LoD2 through libxml2's xmlTextWriter (libcitygml has no
+// writer and GDAL's GML driver cannot produce CityGML; see
+// docs/ecosystem-notes §2). Each building becomes a bldg:Building with
+// gen:* attributes, roofType (SIG3D codeSpace), measuredHeight, a lod2Solid
+// whose surfaceMembers reference the thematic surfaces' polygons by xlink,
+// and bldg:boundedBy Roof/Wall/Ground/ClosureSurface. Output validates
+// against CityGML-2.0-all.xsd.
+class CityGmlWriter final : public CityModelStreamWriter {
+ public:
+  // Throws roofsweep::Error for a missing folder or an existing output
+  // without options.overwrite.
+  CityGmlWriter(const std::string& path, const CityModelWriteOptions& options = {});
+  ~CityGmlWriter() override;
+
+  void Begin(const std::string& crs, const Envelope3& envelope) override;
+  void Write(const Building& building) override;
+  void End() override;
+
+ private:
+  std::string UniqueId(const std::string& wanted, const std::string& fallback);
+  void Check(int rc, const char* what);
+
+  CityModelWriteOptions options_;
+  OutputFile file_;
+  xmlTextWriterPtr writer_ = nullptr;
+  std::string srs_name_;
+  int decimals_ = 4;
+  // Every gml:id written so far: xs:ID must be unique in the document. This is
+  // the only per-building state kept (tens of bytes per id).
+  std::unordered_set<std::string> ids_;
+  std::string buffer_;
+};
+
+// True when `id` is an NCName that may serve as gml:id (starts with a letter
+// or '_', then letters, digits, '.', '-', '_'; ASCII only here).
+bool IsValidGmlId(const std::string& id);
+// `id` made valid: invalid characters become '_', and "id_" is prefixed when
+// it does not start with a letter or '_'. Empty stays empty.
+std::string MakeGmlId(const std::string& id);
+
+}  // namespace roofsweep

@@ -1,0 +1,105 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/citymodel/citymodel_writer.h"
+#include "io/citymodel/output_file.h"
+
+class GDALDataset;
+class OGRLayer;
+class OGRSpatialReference;
+
+namespace roofsweep {
+
+// CityModel as OGR simple features, for QGIS and GIS tools.
+//
+// Multi-layer formats (GPKG, SQLite) get four layers, all MultiPolygonZ in
+// the block CRS promoted to 3D (OSRPromoteTo3D: ellipsoidal heights unless
+// the CRS is compound), with a spatial index:
+//   buildings        footprint = the ground surfaces; id, roof_type,
+//                    roof_type_name, measured_height, roofsweep_validity and
+//                    one field per generic attribute
+//   roof_surfaces, wall_surfaces, ground_surfaces (+ closure_surfaces when
+//   present)         one feature per semantic surface: building_id,
+//                    surface_id, surface_type, surface_index
+// Single-layer formats (FlatGeobuf, GeoJSON, ...) get one layer `surfaces`
+// holding every semantic surface with the building's attributes repeated.
+// ReadOgrCityModel rebuilds the CityModel from either layout.
+class OgrCityModelWriter final : public CityModelStreamWriter {
+ public:
+  // `driver` is a GDAL vector driver short name ("GPKG", "FlatGeobuf",
+  // "GeoJSON"). Throws for an unknown driver or one that cannot create
+  // files, a missing folder, or an existing file without overwrite/update.
+  OgrCityModelWriter(const std::string& path, const std::string& driver,
+                     const CityModelWriteOptions& options = {});
+  ~OgrCityModelWriter() override;
+
+  // Generic attributes expected (name -> true for double, false for string).
+  // Formats that fix their schema before the first feature (FlatGeobuf) need
+  // every name here; others also accept new names as buildings arrive.
+  void DeclareAttributes(const std::map<std::string, bool>& attributes);
+
+  void Begin(const std::string& crs, const Envelope3& envelope) override;
+  void Write(const Building& building) override;
+  void End() override;
+
+ private:
+  struct Layer;
+  void EnsureField(Layer& layer, const std::string& name, bool is_double);
+  void MaybeCommitBatch();
+
+  std::string driver_name_;
+  CityModelWriteOptions options_;
+  OutputFile file_;
+  GDALDataset* ds_ = nullptr;
+  bool multi_layer_ = true;
+  bool in_transaction_ = false;
+  int pending_ = 0;
+  std::map<std::string, bool> declared_;
+  std::map<std::string, std::unique_ptr<Layer>> layers_;
+  std::unique_ptr<OGRSpatialReference> srs_;
+};
+
+// Reads a CityModel written by OgrCityModelWriter (either layout). Throws
+// roofsweep::Error naming the file when it cannot be opened or has none of
+// the expected layers.
+CityModel ReadOgrCityModel(const std::string& path);
+
+// The GDAL driver short name for an output path's extension ("GPKG" for
+// .gpkg, "FlatGeobuf" for .fgb, "GeoJSON" for .geojson), or empty.
+std::string OgrDriverForPath(const std::string& path);
+// True when `name` is a GDAL vector driver that can create files.
+bool IsOgrVectorWriteDriver(const std::string& name);
+
+// ---- Extra layers (lines3d, half planes, ...) ------------------------------
+
+enum class LayerGeometry { kNone, kLineStringZ, kMultiLineStringZ, kMultiPolygonZ };
+
+// One feature for WriteFeatureLayer: geometry by kind, attributes by type.
+struct LayerFeature {
+  std::vector<std::vector<Eigen::Vector3d>> lines;  // LineStringZ uses lines[0]
+  std::vector<Polygon3> polygons;
+  std::map<std::string, long long> integers;
+  std::map<std::string, double> reals;
+  std::map<std::string, std::string> strings;
+};
+
+struct FeatureLayerOptions {
+  std::string driver;  // empty: from the extension
+  std::string crs;     // promoted to 3D like the city model layers; empty: none
+  // As CityModelWriteOptions: overwrite replaces the whole file, update adds
+  // or replaces this layer in an existing file (copy, change, rename).
+  bool overwrite = false;
+  bool update = false;
+};
+
+// Writes `features` as layer `layer` (fields are the union of the features'
+// attribute names). Atomic like the city model writers.
+void WriteFeatureLayer(const std::string& path, const std::string& layer, LayerGeometry geometry,
+                       const std::vector<LayerFeature>& features,
+                       const FeatureLayerOptions& options);
+
+}  // namespace roofsweep
