@@ -1,0 +1,173 @@
+#include "algorithms/eval/eval_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace roofsweep {
+namespace {
+
+nlohmann::json Num(const std::optional<double>& v) {
+  if (!v || !std::isfinite(*v)) return nullptr;
+  return *v;
+}
+
+std::string Fmt(const std::optional<double>& v, const char* format) {
+  if (!v || !std::isfinite(*v)) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, *v);
+  return buf;
+}
+
+std::string Pct(const std::optional<double>& v) { return v ? Fmt(*v * 100.0, "%.1f %%") : "n/a"; }
+
+class Table {
+ public:
+  void Section(const std::string& title) { os_ << "\n" << title << "\n"; }
+  void Row(const std::string& name, const std::string& value, const std::string& note = "") {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "  %-28s %14s  %s", name.c_str(), value.c_str(), note.c_str());
+    std::string line = buf;
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    os_ << line << "\n";
+  }
+  std::string str() const { return os_.str(); }
+
+ private:
+  std::ostringstream os_;
+};
+
+std::string Of(int a, int b) { return std::to_string(a) + " of " + std::to_string(b); }
+
+nlohmann::json InputJson(const InputCounts& c) {
+  return {{"roof_polygons", c.roof_polygons},
+          {"vertical_roof_polygons", c.vertical},
+          {"degenerate_roof_polygons", c.degenerate},
+          {"invalid_roof_polygons", c.invalid},
+          {"downward_roof_polygons", c.downward}};
+}
+
+}  // namespace
+
+std::string FormatTable(const EvalResult& r) {
+  Table t;
+  const auto& p = r.roof_planes;
+  const auto& g = r.geometry;
+  const auto& b = r.buildings;
+  t.Section("Roof planes (overlap >= " + Fmt(r.options.plane_overlap_fraction * 100, "%.0f") +
+            " %, normals within " + Fmt(r.options.max_normal_angle_deg, "%.1f") + " deg)");
+  t.Row("completeness", Pct(p.completeness), Of(p.tp_reference, p.n_reference) + " reference");
+  t.Row("correctness", Pct(p.correctness), Of(p.tp_result, p.n_result) + " result");
+  t.Row("quality", Pct(p.quality));
+  t.Row("over-segmented (1:M)", std::to_string(p.n_1_to_m), "reference planes");
+  t.Row("under-segmented (N:1)", std::to_string(p.n_n_to_1), "result planes");
+  t.Row("N:M clusters", std::to_string(p.n_n_to_m));
+  t.Section("Geometry of matched planes");
+  t.Row("matched pairs", std::to_string(g.matched_pairs));
+  t.Row("normal angle median", Fmt(g.angle_median_deg, "%.2f deg"));
+  t.Row("normal angle RMS", Fmt(g.angle_rms_deg, "%.2f deg"));
+  t.Row("vertex RMS XY", Fmt(g.vertex_rms_m, "%.3f m"),
+        std::to_string(g.vertices) + " vertices, " + std::to_string(g.vertex_outliers) +
+            " beyond " + Fmt(r.options.vertex_max_distance_m, "%.1f m"));
+  if (r.options.gsd_m > 0) t.Row("vertex RMS XY", Fmt(g.vertex_rms_gsd, "%.2f GSD"));
+  t.Row("RMSZ", Fmt(g.rmsz_m, "%.3f m"),
+        std::to_string(g.rmsz_cells) + " cells of " + Fmt(r.options.rmsz_grid_m, "%.2f m"));
+  t.Row("mean dZ (result - ref)", Fmt(g.dz_mean_m, "%+.3f m"));
+  t.Section("Buildings (footprint overlap >= " +
+            Fmt(r.options.building_overlap_fraction * 100, "%.0f") + " %)");
+  t.Row("completeness", Pct(b.completeness), Of(b.tp_reference, b.n_reference) + " reference");
+  t.Row("correctness", Pct(b.correctness), Of(b.tp_result, b.n_result) + " result");
+  t.Row("quality", Pct(b.quality));
+  t.Row("roof type agreement", Pct(b.roof_type_agreement),
+        Of(b.roof_type_same, b.roof_type_compared) + " with known type");
+  if (r.lines3d.evaluated) {
+    const auto& l = r.lines3d;
+    t.Section("3D lines (within " + Fmt(r.options.lines.distance_m * 100, "%.0f") + " cm, " +
+              Fmt(r.options.lines.angle_deg, "%.0f") + " deg)");
+    t.Row("precision", Pct(l.precision),
+          Fmt(l.raw.result_on_reference_m, "%.1f") + " of " + Fmt(l.raw.result_length_m, "%.1f m") +
+              ", " + std::to_string(l.raw.segments) + " segments");
+    t.Row(
+        "completeness", Pct(l.completeness),
+        Fmt(l.raw.reference_covered_m, "%.1f") + " of " + Fmt(l.raw.reference_length_m, "%.1f m"));
+    t.Row(
+        "roof edge completeness", Pct(l.roof_edge_completeness),
+        Fmt(l.raw.roof_edge_covered_m, "%.1f") + " of " + Fmt(l.raw.roof_edge_length_m, "%.1f m"));
+  }
+  const auto skipped = [](const InputCounts& c) {
+    return std::to_string(c.vertical) + " vertical, " + std::to_string(c.degenerate) +
+           " degenerate, " + std::to_string(c.invalid) + " invalid";
+  };
+  t.Section("Roof polygons left out");
+  t.Row("result", std::to_string(r.result_input.roof_polygons) + " total", skipped(r.result_input));
+  t.Row("reference", std::to_string(r.reference_input.roof_polygons) + " total",
+        skipped(r.reference_input));
+  return t.str();
+}
+
+nlohmann::json ToJson(const EvalResult& r) {
+  const auto& p = r.roof_planes;
+  const auto& g = r.geometry;
+  const auto& b = r.buildings;
+  const auto& l = r.lines3d;
+  const auto& o = r.options;
+  nlohmann::json j;
+  j["roof_planes"] = {{"completeness", Num(p.completeness)},
+                      {"correctness", Num(p.correctness)},
+                      {"quality", Num(p.quality)},
+                      {"n_reference", p.n_reference},
+                      {"n_result", p.n_result},
+                      {"tp_reference", p.tp_reference},
+                      {"tp_result", p.tp_result},
+                      {"n_1_to_m", p.n_1_to_m},
+                      {"n_n_to_1", p.n_n_to_1},
+                      {"n_n_to_m", p.n_n_to_m}};
+  j["geometry"] = {{"matched_pairs", g.matched_pairs},
+                   {"angle_median_deg", Num(g.angle_median_deg)},
+                   {"angle_rms_deg", Num(g.angle_rms_deg)},
+                   {"angle_max_deg", Num(g.angle_max_deg)},
+                   {"vertex_rms_m", Num(g.vertex_rms_m)},
+                   {"vertex_rms_gsd", Num(g.vertex_rms_gsd)},
+                   {"vertices", g.vertices},
+                   {"vertex_outliers", g.vertex_outliers},
+                   {"rmsz_m", Num(g.rmsz_m)},
+                   {"dz_mean_m", Num(g.dz_mean_m)},
+                   {"rmsz_cells", g.rmsz_cells},
+                   {"rmsz_cells_result_only", g.rmsz_cells_result_only},
+                   {"rmsz_cells_reference_only", g.rmsz_cells_reference_only}};
+  j["buildings"] = {{"completeness", Num(b.completeness)},
+                    {"correctness", Num(b.correctness)},
+                    {"quality", Num(b.quality)},
+                    {"n_reference", b.n_reference},
+                    {"n_result", b.n_result},
+                    {"tp_reference", b.tp_reference},
+                    {"tp_result", b.tp_result},
+                    {"roof_type_agreement", Num(b.roof_type_agreement)},
+                    {"roof_type_compared", b.roof_type_compared},
+                    {"roof_type_same", b.roof_type_same}};
+  j["lines3d"] = {{"evaluated", l.evaluated},
+                  {"precision", Num(l.precision)},
+                  {"completeness", Num(l.completeness)},
+                  {"roof_edge_completeness", Num(l.roof_edge_completeness)},
+                  {"segments", l.raw.segments},
+                  {"result_length_m", l.raw.result_length_m},
+                  {"reference_length_m", l.raw.reference_length_m},
+                  {"roof_edge_length_m", l.raw.roof_edge_length_m}};
+  j["input"] = {{"result", InputJson(r.result_input)}, {"reference", InputJson(r.reference_input)}};
+  j["options"] = {{"plane_overlap_fraction", o.plane_overlap_fraction},
+                  {"max_normal_angle_deg", o.max_normal_angle_deg},
+                  {"segmentation_overlap_fraction", o.segmentation_overlap_fraction},
+                  {"coplanar_angle_deg", o.planes.coplanar_angle_deg},
+                  {"coplanar_distance_m", o.planes.coplanar_distance_m},
+                  {"group_gap_m", o.planes.group_gap_m},
+                  {"vertical_roof_deg", o.planes.vertical_roof_deg},
+                  {"vertex_max_distance_m", o.vertex_max_distance_m},
+                  {"gsd_m", o.gsd_m},
+                  {"rmsz_grid_m", o.rmsz_grid_m},
+                  {"building_overlap_fraction", o.building_overlap_fraction},
+                  {"line_distance_m", o.lines.distance_m},
+                  {"line_angle_deg", o.lines.angle_deg}};
+  return j;
+}
+
+}  // namespace roofsweep

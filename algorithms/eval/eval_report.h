@@ -1,0 +1,24 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "algorithms/eval/evaluate.h"
+
+namespace roofsweep {
+
+// A fixed-width text table of the figures and counts, for a terminal or a
+// log. Undefined ratios print as "n/a".
+std::string FormatTable(const EvalResult& result);
+
+// The figures as JSON: fractions 0..1, angles in degrees, lengths in metres,
+// undefined ratios null. Keys: roof_planes.{completeness, correctness,
+// quality, n_reference, n_result, tp_reference, tp_result, n_1_to_m, n_n_to_1,
+// n_n_to_m}, geometry.{angle_median_deg, angle_rms_deg, angle_max_deg,
+// vertex_rms_m, vertex_rms_gsd, rmsz_m, dz_mean_m, matched_pairs, ...},
+// buildings.{completeness, correctness, quality, roof_type_agreement, ...},
+// lines3d.{evaluated, precision, completeness, roof_edge_completeness, ...},
+// input.{result, reference}, options.
+nlohmann::json ToJson(const EvalResult& result);
+
+}  // namespace roofsweep

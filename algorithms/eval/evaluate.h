@@ -1,0 +1,134 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/city_model.h"
+#include "algorithms/eval/line_eval.h"
+#include "algorithms/eval/plan_view.h"
+#include "algorithms/geometry/segment3.h"
+
+// Compares a reconstructed city model with a reference (ground truth) the
+// way the ISPRS urban classification and 3D building reconstruction benchmark
+// does (Rottensteiner et al. 2014; Rutzinger et al. 2009), on polygons
+// instead of a label image. Both models must be in the same frame, metres.
+//
+// Rules, exactly:
+// * A roof plane is a set of roof polygons of one building that are coplanar
+//   and touch in plan view (RoofPlaneOptions). Roof polygons steeper than
+//   vertical_roof_deg are not planes (no plan area); they are counted.
+// * Overlap is the plan-view (xy) area of the intersection of two planes'
+//   projections. Unlike ISPRS' label image, a plane hidden under another one
+//   (overhang) counts with its full area.
+// * A reference plane is a true positive (TP_ref) when ONE result plane
+//   overlaps at least plane_overlap_fraction of the REFERENCE plane's area and
+//   their upward normals differ by at most max_normal_angle_deg. A result
+//   plane is TP_rec symmetrically (fraction of the RESULT plane's area).
+//   completeness = TP_ref / N_ref, correctness = TP_rec / N_rec,
+//   quality = TP_ref / (TP_ref + FN + FP) with FN = N_ref - TP_ref and
+//   FP = N_rec - TP_rec (equals 1 / (1/compl + 1/corr - 1) when TP_ref = TP_rec).
+// * Segmentation (topological clarification): a result and a reference plane
+//   are linked when their overlap is at least segmentation_overlap_fraction
+//   of the SMALLER plane's area (no normal test). n_1_to_m: reference planes
+//   linked to more than one result plane (over-segmentation); n_n_to_1:
+//   result planes linked to more than one reference plane
+//   (under-segmentation); n_n_to_m: linked clusters with several of both.
+// * Geometry over matched pairs (each TP reference plane with its result
+//   plane of largest overlap among those that make it TP): normal angle
+//   median/RMS; vertex RMS = RMS of the plan distances from each vertex of
+//   the result plane's outline to the nearest edge of the reference plane's
+//   outline, distances above vertex_max_distance_m left out as outliers
+//   (counted); in GSD units when gsd_m > 0.
+// * RMSZ: both models' roofs rasterised on a grid (rmsz_grid_m), highest roof
+//   per cell; RMS of z_result - z_reference over cells both cover.
+// * Buildings: footprints (GroundSurface union, else roof projection); TP by
+//   the same one-counterpart rule with building_overlap_fraction, no normal
+//   test. Roof-type agreement: fraction of TP reference buildings with a known
+//   (non-zero) roof_type whose best-overlapping result building has the same
+//   SIG3D code.
+// * Ratios with a zero denominator are undefined: empty optionals here, null
+//   in JSON, "n/a" in the table; the counts beside them say why.
+
+namespace roofsweep {
+
+struct EvalOptions {
+  eval::RoofPlaneOptions planes;               // what a roof plane is
+  double plane_overlap_fraction = 0.5;         // ISPRS: at least 50 % of the plane's own area
+  double max_normal_angle_deg = 10.0;          // normals must agree this well to match
+  double segmentation_overlap_fraction = 0.5;  // of the smaller plane, for N:M links
+  double vertex_max_distance_m = 3.0;          // outlier cut for the vertex RMS
+  double gsd_m = 0;                            // > 0: also report vertex RMS in GSD
+  double rmsz_grid_m = 0.25;                   // RMSZ sampling grid
+  double building_overlap_fraction = 0.5;      // footprints, of the building's own area
+  eval::LineEvalOptions lines;                 // 3D line tolerances (10 cm, 10°)
+};
+
+struct PlaneRecord {
+  int building = -1;  // index into the model's buildings
+  std::string building_id;
+  double plan_area = 0;  // m²
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  bool true_positive = false;
+  int counterpart = -1;         // best plane of the other model by overlap (-1: none)
+  double overlap_fraction = 0;  // of this plane's area, with that counterpart
+  double angle_deg = 0;         // with that counterpart
+};
+
+struct RoofPlaneScores {
+  int n_reference = 0, n_result = 0;
+  int tp_reference = 0, tp_result = 0;
+  std::optional<double> completeness, correctness, quality;
+  int n_1_to_m = 0, n_n_to_1 = 0, n_n_to_m = 0;
+};
+
+struct GeometryScores {
+  int matched_pairs = 0;
+  std::optional<double> angle_median_deg, angle_rms_deg, angle_max_deg;
+  int vertices = 0;         // result outline vertices used
+  int vertex_outliers = 0;  // left out: farther than vertex_max_distance_m
+  std::optional<double> vertex_rms_m, vertex_rms_gsd;
+  long long rmsz_cells = 0;  // grid cells both models cover
+  long long rmsz_cells_result_only = 0, rmsz_cells_reference_only = 0;
+  std::optional<double> rmsz_m, dz_mean_m;
+};
+
+struct BuildingScores {
+  int n_reference = 0, n_result = 0;
+  int tp_reference = 0, tp_result = 0;
+  std::optional<double> completeness, correctness, quality;
+  int roof_type_compared = 0, roof_type_same = 0;
+  std::optional<double> roof_type_agreement;
+};
+
+struct Lines3dScores {
+  bool evaluated = false;  // false when no lines were given
+  eval::LineScores raw;
+  std::optional<double> precision, completeness, roof_edge_completeness;
+};
+
+// Roof polygons each model had to leave out (see RoofPlaneSet).
+struct InputCounts {
+  int roof_polygons = 0, vertical = 0, degenerate = 0, invalid = 0, downward = 0;
+};
+
+struct EvalResult {
+  RoofPlaneScores roof_planes;
+  GeometryScores geometry;
+  BuildingScores buildings;
+  Lines3dScores lines3d;
+  InputCounts result_input, reference_input;
+  std::vector<PlaneRecord> result_planes,
+      reference_planes;  // per plane, in ExtractRoofPlanes order
+  std::vector<int> result_building_matched, reference_building_matched;  // 1: TP
+  EvalOptions options;                                                   // as used
+};
+
+// `lines`: reconstructed 3D segments (optional). `extra_reference_segments`:
+// reference segments besides the roof edges, e.g. ground markings (optional).
+// Throws roofsweep::Error for options out of range.
+EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
+                    const std::vector<Segment3>* lines = nullptr,
+                    const std::vector<Segment3>* extra_reference_segments = nullptr);
+
+}  // namespace roofsweep

@@ -1,0 +1,268 @@
+#include "algorithms/eval/evaluate.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "algorithms/core/error.h"
+#include "algorithms/eval/test_models.h"
+
+namespace roofsweep {
+namespace {
+
+using V = Eigen::Vector3d;
+using eval_test::ThreeHouses;
+using eval_test::Transformed;
+
+CityModel Shifted(const CityModel& m, const V& d) {
+  return Transformed(m, [&](const V& v) { return V(v + d); });
+}
+
+TEST(Evaluate, ModelAgainstItselfIsPerfect) {
+  const CityModel m = ThreeHouses();
+  const auto lines = eval_test::UniqueRoofEdges(m);
+  const EvalResult r = Evaluate(m, m, {}, &lines);
+  EXPECT_EQ(r.roof_planes.n_reference, 7);
+  EXPECT_EQ(r.roof_planes.n_result, 7);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.completeness, 1);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.correctness, 1);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.quality, 1);
+  EXPECT_EQ(r.roof_planes.n_1_to_m + r.roof_planes.n_n_to_1 + r.roof_planes.n_n_to_m, 0);
+  EXPECT_EQ(r.geometry.matched_pairs, 7);
+  EXPECT_NEAR(*r.geometry.angle_median_deg, 0, 1e-6);
+  EXPECT_NEAR(*r.geometry.angle_rms_deg, 0, 1e-6);
+  EXPECT_NEAR(*r.geometry.vertex_rms_m, 0, 1e-9);
+  EXPECT_EQ(r.geometry.vertices, 4 + 8 + 14);
+  EXPECT_NEAR(*r.geometry.rmsz_m, 0, 1e-9);
+  // 80 + 96 + 140 m² at 0.25 m cells.
+  EXPECT_EQ(r.geometry.rmsz_cells, (80 + 96 + 140) * 16);
+  EXPECT_EQ(r.geometry.rmsz_cells_result_only + r.geometry.rmsz_cells_reference_only, 0);
+  EXPECT_DOUBLE_EQ(*r.buildings.completeness, 1);
+  EXPECT_DOUBLE_EQ(*r.buildings.correctness, 1);
+  EXPECT_DOUBLE_EQ(*r.buildings.roof_type_agreement, 1);
+  EXPECT_EQ(r.buildings.roof_type_compared, 3);
+  EXPECT_NEAR(*r.lines3d.precision, 1, 1e-12);
+  EXPECT_NEAR(*r.lines3d.completeness, 1, 1e-12);
+  EXPECT_NEAR(*r.lines3d.roof_edge_completeness, 1, 1e-12);
+  for (const auto& p : r.reference_planes) {
+    EXPECT_TRUE(p.true_positive);
+    EXPECT_NEAR(p.overlap_fraction, 1, 1e-9);
+  }
+}
+
+TEST(Evaluate, EmptyResultAndEmptyReference) {
+  const CityModel m = ThreeHouses();
+  const EvalResult r = Evaluate(CityModel{}, m, {});
+  EXPECT_DOUBLE_EQ(*r.roof_planes.completeness, 0);
+  EXPECT_FALSE(r.roof_planes.correctness.has_value());  // 0 of 0 result planes
+  EXPECT_DOUBLE_EQ(*r.roof_planes.quality, 0);
+  EXPECT_EQ(r.roof_planes.n_result, 0);
+  EXPECT_FALSE(r.geometry.angle_rms_deg.has_value());
+  EXPECT_FALSE(r.geometry.rmsz_m.has_value());
+  EXPECT_DOUBLE_EQ(*r.buildings.completeness, 0);
+  EXPECT_FALSE(r.buildings.correctness.has_value());
+
+  const EvalResult e = Evaluate(m, CityModel{}, {});
+  EXPECT_FALSE(e.roof_planes.completeness.has_value());
+  EXPECT_DOUBLE_EQ(*e.roof_planes.correctness, 0);
+
+  const EvalResult both = Evaluate(CityModel{}, CityModel{}, {});
+  EXPECT_FALSE(both.roof_planes.quality.has_value());
+}
+
+// Shifts along x by s. Expected overlaps, each plane with its own copy:
+// box roof 10 m long: 1 - s/10; gable planes 12 m long: 1 - s/12; hip
+// trapezoids (eaves 14, ridge 4, depth 5): (45 - 5 s) / 45 for s <= 4; hip
+// end triangles (base 10, depth 5): (5 - s)² / 25.
+TEST(Evaluate, ShiftedCopiesDropAsTheOverlapsSay) {
+  const CityModel m = ThreeHouses();
+  struct Case {
+    double s;
+    int tp;  // planes with overlap >= 50 %
+    int buildings_tp;
+  };
+  for (const Case c : {Case{0.5, 7, 3}, Case{2, 5, 3}, Case{10, 0, 0}}) {
+    SCOPED_TRACE("shift " + std::to_string(c.s));
+    const EvalResult r = Evaluate(Shifted(m, V(c.s, 0, 0)), m, {});
+    EXPECT_EQ(r.roof_planes.tp_reference, c.tp);
+    EXPECT_EQ(r.roof_planes.tp_result, c.tp);
+    EXPECT_NEAR(*r.roof_planes.completeness, c.tp / 7.0, 1e-12);
+    EXPECT_NEAR(*r.roof_planes.correctness, c.tp / 7.0, 1e-12);
+    EXPECT_NEAR(*r.roof_planes.quality, c.tp / (c.tp + 2.0 * (7 - c.tp)), 1e-12);
+    EXPECT_EQ(r.buildings.tp_reference, c.buildings_tp);
+    const auto& p = r.reference_planes;
+    if (c.s < 5) {
+      const double expected[7] = {1 - c.s / 10,
+                                  1 - c.s / 12,
+                                  1 - c.s / 12,
+                                  (45 - 5 * c.s) / 45,
+                                  std::pow(5 - c.s, 2) / 25,
+                                  (45 - 5 * c.s) / 45,
+                                  std::pow(5 - c.s, 2) / 25};
+      for (int i = 0; i < 7; ++i)
+        if (p[i].true_positive) {
+          EXPECT_NEAR(p[i].overlap_fraction, expected[i], 1e-9) << "plane " << i;
+          EXPECT_GE(expected[i], 0.5);
+        } else {
+          EXPECT_LT(expected[i], 0.5) << "plane " << i;
+        }
+    }
+  }
+}
+
+TEST(Evaluate, ShiftedBoxVertexRmsAndRmsz) {
+  CityModel m;
+  m.buildings.push_back(eval_test::Box("B", 0, 0, 10, 8, 30, 6));
+  m.buildings.push_back(eval_test::Gable("G", 40, 0, 12, 8, 30, 6, 3));
+  EvalOptions o;
+  o.gsd_m = 0.1;
+  {
+    // Box: two corners on the reference outline, two 0.5 m off. Gable
+    // rectangles alike. RMS = sqrt(2 * 0.25 / 4).
+    const EvalResult r = Evaluate(Shifted(m, V(0.5, 0, 0)), m, o);
+    EXPECT_NEAR(*r.geometry.vertex_rms_m, std::sqrt(0.125), 1e-9);
+    EXPECT_NEAR(*r.geometry.vertex_rms_gsd, std::sqrt(0.125) / 0.1, 1e-7);
+    // Flat roof and a gable shifted along its ridge: same heights where both exist.
+    EXPECT_NEAR(*r.geometry.rmsz_m, 0, 1e-9);
+    EXPECT_EQ(r.geometry.rmsz_cells, (76 + 92) * 16);  // (10-0.5)*8 + (12-0.5)*8
+  }
+  {
+    const EvalResult r = Evaluate(Shifted(m, V(2, 0, 0)), m, o);
+    EXPECT_NEAR(*r.geometry.vertex_rms_m, std::sqrt(2.0), 1e-9);
+  }
+}
+
+TEST(Evaluate, HeightOffsetShowsInRmszOnly) {
+  const CityModel m = ThreeHouses();
+  const EvalResult r = Evaluate(Shifted(m, V(0, 0, 0.3)), m, {});
+  EXPECT_DOUBLE_EQ(*r.roof_planes.quality, 1);
+  EXPECT_NEAR(*r.geometry.vertex_rms_m, 0, 1e-9);
+  EXPECT_NEAR(*r.geometry.angle_rms_deg, 0, 1e-6);
+  EXPECT_NEAR(*r.geometry.rmsz_m, 0.3, 1e-5);
+  EXPECT_NEAR(*r.geometry.dz_mean_m, 0.3, 1e-5);
+}
+
+TEST(Evaluate, TiltedCopyShowsTheTiltAsAngleError) {
+  // Box and gable (ridge along x) rotated 5° about an x axis: every roof
+  // normal is perpendicular to the axis, so each turns by exactly 5°.
+  CityModel m;
+  m.buildings.push_back(eval_test::Box("B", 0, 0, 10, 8, 30, 6));
+  m.buildings.push_back(eval_test::Gable("G", 40, 0, 12, 8, 30, 6, 3));
+  const double t = 5 * M_PI / 180;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(t, V::UnitX()).toRotationMatrix();
+  const V c(25, 4, 36);
+  const EvalResult r =
+      Evaluate(Transformed(m, [&](const V& v) { return V(c + R * (v - c)); }), m, {});
+  EXPECT_DOUBLE_EQ(*r.roof_planes.completeness, 1);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.correctness, 1);
+  EXPECT_NEAR(*r.geometry.angle_median_deg, 5, 1e-9);
+  EXPECT_NEAR(*r.geometry.angle_rms_deg, 5, 1e-9);
+  EXPECT_GT(*r.geometry.rmsz_m, 0.1);
+  // Beyond the tolerance (5° allowed) nothing matches.
+  EvalOptions strict;
+  strict.max_normal_angle_deg = 4.9;
+  EXPECT_DOUBLE_EQ(
+      *Evaluate(Transformed(m, [&](const V& v) { return V(c + R * (v - c)); }), m, strict)
+           .roof_planes.completeness,
+      0);
+}
+
+TEST(Evaluate, OneMissingRoofPlane) {
+  const CityModel m = ThreeHouses();
+  CityModel missing = m;
+  auto& surfaces = missing.buildings[1].surfaces;  // the gable
+  for (auto it = surfaces.rbegin(); it != surfaces.rend(); ++it)
+    if (it->type == SurfaceType::kRoof) {
+      surfaces.erase(std::next(it).base());
+      break;
+    }
+  const EvalResult r = Evaluate(missing, m, {});
+  EXPECT_EQ(r.roof_planes.n_result, 6);
+  EXPECT_NEAR(*r.roof_planes.completeness, 6.0 / 7.0, 1e-12);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.correctness, 1);
+  EXPECT_NEAR(*r.roof_planes.quality, 6.0 / 7.0, 1e-12);
+  EXPECT_FALSE(r.reference_planes[2].true_positive);  // the gable's north plane
+}
+
+TEST(Evaluate, WrongNormalsDoNotMatchButFootprintsDo) {
+  CityModel flat, gable;
+  flat.buildings.push_back(eval_test::Box("B", 0, 0, 12, 8, 0, 6));
+  gable.buildings.push_back(eval_test::Gable("B", 0, 0, 12, 8, 0, 6, 3));
+  const EvalResult r = Evaluate(flat, gable, {});
+  EXPECT_DOUBLE_EQ(*r.roof_planes.completeness, 0);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.correctness, 0);
+  EXPECT_DOUBLE_EQ(*r.buildings.completeness, 1);
+  EXPECT_DOUBLE_EQ(*r.buildings.roof_type_agreement, 0);
+  // Under-segmentation is still seen: one result plane over two reference planes.
+  EXPECT_EQ(r.roof_planes.n_n_to_1, 1);
+}
+
+TEST(Evaluate, OverAndUnderSegmentation) {
+  // A low gable with an off-centre ridge (7.1° and 3.1° pitch, 30 % / 70 %
+  // of the plan) against a flat roof: all within the 10° tolerance.
+  CityModel flat, low;
+  flat.buildings.push_back(eval_test::Box("B", 0, 0, 12, 8, 0, 6));
+  low.buildings.push_back(eval_test::Gable("B", 0, 0, 12, 8, 0, 6, 0.3, 0.3));
+  const EvalResult over = Evaluate(low, flat, {});
+  EXPECT_EQ(over.roof_planes.n_1_to_m, 1);
+  EXPECT_EQ(over.roof_planes.n_n_to_1, 0);
+  EXPECT_EQ(over.roof_planes.n_n_to_m, 0);
+  EXPECT_DOUBLE_EQ(*over.roof_planes.completeness, 1);  // 70 % by one plane
+  EXPECT_DOUBLE_EQ(*over.roof_planes.correctness, 1);
+  const EvalResult under = Evaluate(flat, low, {});
+  EXPECT_EQ(under.roof_planes.n_1_to_m, 0);
+  EXPECT_EQ(under.roof_planes.n_n_to_1, 1);
+  EXPECT_DOUBLE_EQ(*under.roof_planes.completeness, 1);
+  EXPECT_DOUBLE_EQ(*under.roof_planes.correctness, 1);
+  // A ridge off-centre the other way in the result: 2 against 2 crosswise.
+  CityModel other;
+  other.buildings.push_back(eval_test::Gable("B", 0, 0, 12, 8, 0, 6, 0.3, 0.7));
+  const EvalResult nm = Evaluate(other, low, {});
+  EXPECT_EQ(nm.roof_planes.n_n_to_m, 1);
+}
+
+TEST(Evaluate, VerticalRoofPolygonIsLeftOutAndCounted) {
+  CityModel m = ThreeHouses();
+  CityModel with_wall_as_roof = m;
+  with_wall_as_roof.buildings[0].surfaces.push_back(
+      {SurfaceType::kRoof,
+       "mislabelled",
+       {{{V(0, 0, 30), V(10, 0, 30), V(10, 0, 36), V(0, 0, 36)}, {}}}});
+  const EvalResult r = Evaluate(with_wall_as_roof, m, {});
+  EXPECT_EQ(r.result_input.vertical, 1);
+  EXPECT_EQ(r.roof_planes.n_result, 7);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.quality, 1);
+  EXPECT_NEAR(*r.geometry.rmsz_m, 0, 1e-9);
+}
+
+TEST(Evaluate, CourtyardHole) {
+  CityModel holed, solid;
+  solid.buildings.push_back(eval_test::Box("B", 0, 0, 10, 8, 0, 6));
+  holed = solid;
+  for (auto& s : holed.buildings[0].surfaces)
+    if (s.type == SurfaceType::kRoof)
+      s.polygons[0].holes.push_back({V(2, 2, 6), V(2, 6, 6), V(8, 6, 6), V(8, 2, 6)});
+  const EvalResult self = Evaluate(holed, holed, {});
+  EXPECT_DOUBLE_EQ(*self.roof_planes.quality, 1);
+  EXPECT_NEAR(self.reference_planes[0].plan_area, 56, 1e-9);
+  EXPECT_EQ(self.geometry.rmsz_cells, 56 * 16);
+  // The solid roof covers all of the holed one; 56 of its 80 m² are covered.
+  const EvalResult r = Evaluate(solid, holed, {});
+  EXPECT_NEAR(r.reference_planes[0].overlap_fraction, 1, 1e-9);
+  EXPECT_NEAR(r.result_planes[0].overlap_fraction, 0.7, 1e-9);
+  EXPECT_DOUBLE_EQ(*r.roof_planes.quality, 1);
+}
+
+TEST(Evaluate, BadOptionsThrow) {
+  const CityModel m = ThreeHouses();
+  EvalOptions o;
+  o.plane_overlap_fraction = 0;
+  EXPECT_THROW(Evaluate(m, m, o), Error);
+  o = {};
+  o.rmsz_grid_m = -1;
+  EXPECT_THROW(Evaluate(m, m, o), Error);
+}
+
+}  // namespace
+}  // namespace roofsweep

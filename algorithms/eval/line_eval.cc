@@ -1,0 +1,153 @@
+#include "algorithms/eval/line_eval.h"
+
+#include <cmath>
+#include <unordered_map>
+
+#include "algorithms/core/error.h"
+
+namespace roofsweep::eval {
+namespace {
+
+// Buckets segments by the xy cells their (tolerance-grown) bounding boxes
+// touch, so a sample point only meets the few segments near it. A hand-made
+// grid because the query is "all segments within d of a point" in 3D, which
+// OpenCV/Eigen do not offer, and CGAL's AABB tree would put CGAL compile
+// costs into this file for no gain at these sizes.
+class SegmentGrid {
+ public:
+  SegmentGrid(const std::vector<const Segment3*>& segments, double margin, double cell)
+      : segments_(segments), cell_(cell) {
+    for (int i = 0; i < static_cast<int>(segments.size()); ++i) {
+      const Segment3& s = *segments[i];
+      const Eigen::Vector2d lo = s.a.head<2>().cwiseMin(s.b.head<2>()).array() - margin;
+      const Eigen::Vector2d hi = s.a.head<2>().cwiseMax(s.b.head<2>()).array() + margin;
+      const long long x0 = Cell(lo.x()), x1 = Cell(hi.x()), y0 = Cell(lo.y()), y1 = Cell(hi.y());
+      if ((x1 - x0 + 1) * (y1 - y0 + 1) > 1000000)
+        throw Error("3D line evaluation: a segment spans more than 10^6 grid cells");
+      for (long long x = x0; x <= x1; ++x)
+        for (long long y = y0; y <= y1; ++y) cells_[Key(x, y)].push_back(i);
+    }
+  }
+
+  // True when a segment within `dist` of p has a direction within the angle.
+  bool Near(const Eigen::Vector3d& p, const Eigen::Vector3d& dir, double dist,
+            double cos_angle) const {
+    const auto it = cells_.find(Key(Cell(p.x()), Cell(p.y())));
+    if (it == cells_.end()) return false;
+    for (int i : it->second) {
+      const Segment3& s = *segments_[i];
+      if (std::abs(s.Direction().dot(dir)) < cos_angle) continue;
+      if (s.Distance(p) <= dist) return true;
+    }
+    return false;
+  }
+
+ private:
+  long long Cell(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+  static long long Key(long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; }
+
+  std::vector<const Segment3*> segments_;
+  double cell_;
+  // Hash collisions only add candidates; the distance test decides.
+  std::unordered_map<long long, std::vector<int>> cells_;
+};
+
+// Length of `s` whose sample points satisfy `grid.Near`.
+double CoveredLength(const Segment3& s, const SegmentGrid& grid, const LineEvalOptions& o,
+                     double cos_angle) {
+  const double len = s.Length();
+  if (len <= 0) return 0;
+  const int n = std::max(1, static_cast<int>(std::ceil(len / o.sample_step_m)));
+  const Eigen::Vector3d dir = s.Direction();
+  int hits = 0;
+  for (int k = 0; k < n; ++k)
+    if (grid.Near(s.At((k + 0.5) / n), dir, o.distance_m, cos_angle)) ++hits;
+  return len * hits / n;
+}
+
+}  // namespace
+
+std::vector<Segment3> RoofEdges(const CityModel& model, const LineEvalOptions& options) {
+  const double cos_coplanar = std::cos(options.coplanar_angle_deg * M_PI / 180.0);
+  std::vector<Segment3> out;
+  for (const auto& b : model.buildings) {
+    struct Entry {
+      Segment3 seg;
+      Eigen::Vector3d normal;  // of the polygon it came from
+      bool drop = false;
+      bool duplicate = false;
+    };
+    std::vector<Entry> entries;
+    for (const auto& s : b.surfaces) {
+      if (s.type != SurfaceType::kRoof) continue;
+      for (const auto& p : s.polygons) {
+        Eigen::Vector3d n = p.Normal();
+        if (n.z() < 0) n = -n;
+        auto add = [&](const std::vector<Eigen::Vector3d>& ring) {
+          for (size_t i = 0; i < ring.size(); ++i) {
+            Segment3 seg{ring[i], ring[(i + 1) % ring.size()]};
+            if (seg.Length() > options.merge_m) entries.push_back({seg, n});
+          }
+        };
+        add(p.exterior);
+        for (const auto& h : p.holes) add(h);
+      }
+    }
+    // Quadratic in the edges of one building, which are few.
+    for (size_t i = 0; i < entries.size(); ++i) {
+      if (entries[i].duplicate) continue;
+      for (size_t j = i + 1; j < entries.size(); ++j) {
+        const Segment3& u = entries[i].seg;
+        const Segment3& v = entries[j].seg;
+        const bool same =
+            ((u.a - v.a).norm() <= options.merge_m && (u.b - v.b).norm() <= options.merge_m) ||
+            ((u.a - v.b).norm() <= options.merge_m && (u.b - v.a).norm() <= options.merge_m);
+        if (!same) continue;
+        entries[j].duplicate = true;
+        if (std::abs(entries[i].normal.dot(entries[j].normal)) >= cos_coplanar)
+          entries[i].drop = true;
+      }
+    }
+    for (const auto& e : entries)
+      if (!e.duplicate && !e.drop) out.push_back(e.seg);
+  }
+  return out;
+}
+
+LineScores EvaluateLines(const std::vector<Segment3>& result,
+                         const std::vector<Segment3>& roof_edges,
+                         const std::vector<Segment3>& extra_reference,
+                         const LineEvalOptions& options) {
+  if (!(options.distance_m >= 0) || !(options.sample_step_m > 0))
+    throw Error("3D line evaluation: distance must be >= 0 and sample step > 0");
+  const double cos_angle = std::cos(options.angle_deg * M_PI / 180.0);
+  // Cells of a few tolerances: small enough to keep candidate lists short,
+  // large enough that long segments do not touch too many cells.
+  const double cell = std::max(1.0, 10 * options.distance_m);
+  LineScores s;
+  s.segments = static_cast<int>(result.size());
+  std::vector<const Segment3*> res, ref;
+  for (const auto& l : result) res.push_back(&l);
+  for (const auto& l : roof_edges) ref.push_back(&l);
+  for (const auto& l : extra_reference) ref.push_back(&l);
+  const SegmentGrid res_grid(res, options.distance_m, cell);
+  const SegmentGrid ref_grid(ref, options.distance_m, cell);
+  for (const auto& l : result) {
+    s.result_length_m += l.Length();
+    s.result_on_reference_m += CoveredLength(l, ref_grid, options, cos_angle);
+  }
+  for (const auto& l : roof_edges) {
+    const double c = CoveredLength(l, res_grid, options, cos_angle);
+    s.roof_edge_length_m += l.Length();
+    s.roof_edge_covered_m += c;
+  }
+  s.reference_length_m = s.roof_edge_length_m;
+  s.reference_covered_m = s.roof_edge_covered_m;
+  for (const auto& l : extra_reference) {
+    s.reference_length_m += l.Length();
+    s.reference_covered_m += CoveredLength(l, res_grid, options, cos_angle);
+  }
+  return s;
+}
+
+}  // namespace roofsweep::eval

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <vector>
+
+#include "algorithms/buildings/city_model.h"
+#include "algorithms/geometry/segment3.h"
+
+namespace roofsweep::eval {
+
+struct LineEvalOptions {
+  // A point of one segment "lies on" a segment of the other set when it is
+  // within this 3D distance of it...
+  double distance_m = 0.10;
+  // ... and the two directions differ by at most this (undirected).
+  double angle_deg = 10.0;
+  // Segments are measured by sampling at most this far apart (length-based
+  // fractions, exact to about this step at segment ends).
+  double sample_step_m = 0.02;
+  // Roof edges of one building closer than this are one edge (a ridge is in
+  // both its roof polygons).
+  double merge_m = 0.001;
+  // Edges between two polygons this close to coplanar are not roof edges
+  // (triangulated roof faces in real LoD2 data).
+  double coplanar_angle_deg = 2.0;
+};
+
+// The distinct edges of the roof polygons (exterior rings and holes) of all
+// buildings: shared edges once, edges between coplanar polygons left out.
+// Only exact (within merge_m) shared edges are recognised; T-junctions are not.
+std::vector<Segment3> RoofEdges(const CityModel& model, const LineEvalOptions& options);
+
+struct LineScores {
+  int segments = 0;                  // reconstructed segments given
+  double result_length_m = 0;        // their total length
+  double reference_length_m = 0;     // roof edges + extra reference segments
+  double roof_edge_length_m = 0;     // roof edges only
+  double result_on_reference_m = 0;  // result length within tolerance of a reference segment
+  double reference_covered_m = 0;    // reference length covered by a result segment
+  double roof_edge_covered_m = 0;    // roof-edge length covered
+};
+
+// Length-based comparison. precision = result_on_reference_m / result_length_m,
+// completeness = reference_covered_m / reference_length_m,
+// roof_edge_completeness = roof_edge_covered_m / roof_edge_length_m.
+LineScores EvaluateLines(const std::vector<Segment3>& result,
+                         const std::vector<Segment3>& roof_edges,
+                         const std::vector<Segment3>& extra_reference,
+                         const LineEvalOptions& options);
+
+}  // namespace roofsweep::eval

@@ -1,0 +1,118 @@
+#include "algorithms/eval/plan_view.h"
+
+#include <gtest/gtest.h>
+
+#include "algorithms/eval/test_models.h"
+
+namespace roofsweep::eval {
+namespace {
+
+using V = Eigen::Vector3d;
+
+TEST(PlanGeometry, UnionOfTouchingSquaresIsOneRectangle) {
+  const Polygon2 a{{{0, 0}, {5, 0}, {5, 8}, {0, 8}}, {}};
+  const Polygon2 b{{{5, 8}, {5, 0}, {10, 0}, {10, 8}}, {}};  // clockwise on purpose
+  const MultiPolygon2 u = Union({a, b});
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].outer.size(), 4u);  // collinear (5,0) and (5,8) removed
+  EXPECT_NEAR(Area(u), 80.0, 1e-9);
+}
+
+TEST(PlanGeometry, IntersectionAreaAndDistance) {
+  const MultiPolygon2 a = Union({{{{0, 0}, {10, 0}, {10, 8}, {0, 8}}, {}}});
+  const MultiPolygon2 b = Union({{{{2, 0}, {12, 0}, {12, 8}, {2, 8}}, {}}});
+  const MultiPolygon2 c = Union({{{{13, 0}, {14, 0}, {14, 1}}, {}}});
+  EXPECT_NEAR(IntersectionArea(a, b), 64.0, 1e-9);
+  EXPECT_NEAR(IntersectionArea(a, c), 0.0, 1e-12);
+  EXPECT_NEAR(Distance(a, c), 3.0, 1e-12);
+  EXPECT_NEAR(Distance(a, b), 0.0, 1e-12);
+}
+
+TEST(PlanGeometry, DegenerateAndSelfIntersectingAreLeftOutAndCounted) {
+  UnionStats stats;
+  const MultiPolygon2 u = Union({{{{0, 0}, {1, 0}, {2, 0}}, {}},          // collinear
+                                 {{{0, 0}, {4, 4}, {4, 0}, {0, 2}}, {}},  // bow tie
+                                 {{{5, 5}, {6, 5}, {6, 6}, {5, 6}}, {}}},
+                                &stats);
+  EXPECT_EQ(stats.degenerate, 1);
+  EXPECT_EQ(stats.invalid, 1);
+  EXPECT_NEAR(Area(u), 1.0, 1e-12);
+}
+
+TEST(RoofPlanes, ThreeHousesHaveSevenPlanesWithPlanAreas) {
+  const RoofPlaneSet s = ExtractRoofPlanes(eval_test::ThreeHouses(), {});
+  ASSERT_EQ(s.planes.size(), 7u);
+  EXPECT_EQ(s.roof_polygons, 7);
+  EXPECT_NEAR(s.planes[0].plan_area, 80, 1e-9);
+  EXPECT_NEAR(s.planes[1].plan_area, 48, 1e-9);
+  EXPECT_NEAR(s.planes[3].plan_area, 45, 1e-9);  // hip trapezoid (14 + 4) / 2 * 5
+  EXPECT_NEAR(s.planes[4].plan_area, 25, 1e-9);  // hip end triangle 10 * 5 / 2
+  // Gable south plane: rise 3 over 4 m.
+  EXPECT_NEAR(s.planes[1].normal.y(), -0.6, 1e-12);
+  EXPECT_NEAR(s.planes[1].normal.z(), 0.8, 1e-12);
+  EXPECT_EQ(s.vertical_polygons + s.degenerate_polygons + s.invalid_polygons, 0);
+}
+
+TEST(RoofPlanes, CoplanarTouchingPiecesMergeAcrossSurfaces) {
+  CityModel m;
+  m.buildings.push_back(eval_test::Box("B", 0, 0, 10, 8, 0, 5));
+  Building& b = m.buildings[0];
+  b.surfaces.pop_back();  // the one-piece flat roof
+  Surface r1{SurfaceType::kRoof, "r1", {{{V(0, 0, 5), V(5, 0, 5), V(5, 8, 5), V(0, 8, 5)}, {}}}};
+  Surface r2{SurfaceType::kRoof,
+             "r2",
+             {{{V(5, 0, 5), V(10, 0, 5), V(10, 4, 5)}, {}},
+              {{V(5, 0, 5), V(10, 4, 5), V(10, 8, 5), V(5, 8, 5)}, {}}}};
+  b.surfaces.push_back(r1);
+  b.surfaces.push_back(r2);
+  const RoofPlaneSet s = ExtractRoofPlanes(m, {});
+  ASSERT_EQ(s.planes.size(), 1u);
+  EXPECT_EQ(s.planes[0].polygons.size(), 3u);
+  EXPECT_NEAR(s.planes[0].plan_area, 80, 1e-9);
+  ASSERT_EQ(s.planes[0].plan.size(), 1u);
+  EXPECT_EQ(s.planes[0].plan[0].outer.size(), 4u);
+}
+
+TEST(RoofPlanes, SeparateCoplanarRoofsStayTwoPlanesAndOtherHeightsSplit) {
+  CityModel m;
+  Building b;
+  b.id = "B";
+  // Same height, 2 m apart: two planes. Touching but 0.5 m higher: a third.
+  b.surfaces.push_back({SurfaceType::kRoof,
+                        "",
+                        {{{V(0, 0, 5), V(4, 0, 5), V(4, 4, 5), V(0, 4, 5)}, {}},
+                         {{V(6, 0, 5), V(10, 0, 5), V(10, 4, 5), V(6, 4, 5)}, {}},
+                         {{V(0, 4, 5.5), V(4, 4, 5.5), V(4, 6, 5.5), V(0, 6, 5.5)}, {}}}});
+  m.buildings.push_back(b);
+  EXPECT_EQ(ExtractRoofPlanes(m, {}).planes.size(), 3u);
+}
+
+TEST(RoofPlanes, VerticalDownwardAndHoledPolygons) {
+  CityModel m;
+  Building b;
+  b.id = "B";
+  Polygon3 holed{{V(0, 0, 5), V(10, 0, 5), V(10, 8, 5), V(0, 8, 5)},
+                 {{V(2, 2, 5), V(2, 6, 5), V(8, 6, 5), V(8, 2, 5)}}};
+  Polygon3 vertical{{V(20, 0, 0), V(30, 0, 0), V(30, 0, 5), V(20, 0, 5)}, {}};
+  Polygon3 downward{{V(40, 0, 5), V(40, 4, 5), V(44, 4, 5), V(44, 0, 5)}, {}};  // clockwise
+  b.surfaces.push_back({SurfaceType::kRoof, "", {holed, vertical, downward}});
+  m.buildings.push_back(b);
+  const RoofPlaneSet s = ExtractRoofPlanes(m, {});
+  ASSERT_EQ(s.planes.size(), 2u);
+  EXPECT_EQ(s.vertical_polygons, 1);
+  EXPECT_EQ(s.downward_polygons, 1);
+  EXPECT_NEAR(s.planes[0].plan_area, 80 - 24, 1e-9);
+  EXPECT_NEAR(s.planes[1].plan_area, 16, 1e-9);
+  EXPECT_NEAR(s.planes[1].normal.z(), 1, 1e-12);
+}
+
+TEST(Footprint, GroundSurfaceElseRoofProjection) {
+  const Building g = eval_test::Gable("G", 0, 0, 12, 8, 0, 5, 3);
+  EXPECT_NEAR(Area(BuildingFootprint(g, {})), 96, 1e-9);
+  Building roof_only = g;
+  roof_only.surfaces.erase(roof_only.surfaces.begin());  // drop the ground
+  EXPECT_NEAR(Area(BuildingFootprint(roof_only, {})), 96, 1e-9);
+}
+
+}  // namespace
+}  // namespace roofsweep::eval
