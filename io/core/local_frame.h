@@ -16,6 +16,11 @@ namespace roofsweep {
 // Heights must be ellipsoidal: a compound CRS whose vertical part PROJ can
 // only handle by a "ballpark" step (no geoid grid installed) is refused, and
 // orthometric heights need an explicit constant undulation.
+//
+// Projected CRSs take (easting, northing, height) and geographic ones
+// (longitude, latitude, height) in degrees, whatever the CRS's own axis
+// order. Every method may be called from several threads at once (each
+// object owns its PROJ context and serialises its PROJ calls).
 class LocalFrame {
  public:
   // crs: PROJ-readable definition ("EPSG:25833", WKT, PROJ string); empty
@@ -27,6 +32,8 @@ class LocalFrame {
   LocalFrame& operator=(LocalFrame&&) noexcept;
 
   bool HasCrs() const;
+  // The origin as given, in CRS coordinates.
+  const Eigen::Vector3d& OriginCrs() const;
   Eigen::Vector3d ToLocal(const Eigen::Vector3d& crs_xyz) const;
   Eigen::Vector3d ToCrs(const Eigen::Vector3d& local_xyz) const;
   // Rotation taking vectors in CRS grid axes (E, N, up at crs_xyz) into
