@@ -7,6 +7,7 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -36,9 +37,10 @@ class QuietGdal {
   }
 };
 
-const char* kReserved[] = {"id",          "roof_type",  "roof_type_name", "measured_height",
-                           "building_id", "surface_id", "surface_type",   "surface_index",
-                           "fid",         "geom"};
+const char* kReserved[] = {
+    "id",         "roof_type",    "roof_type_name", "measured_height", "building_id",
+    "surface_id", "surface_type", "surface_index",  "building_index",  "fid",
+    "geom"};
 
 bool IsReserved(const std::string& name) {
   for (const char* r : kReserved)
@@ -116,13 +118,14 @@ std::vector<Polygon3> ReadPolygons(const OGRGeometry* g) {
   return out;
 }
 
-std::unique_ptr<OGRSpatialReference> Make3dSrs(const std::string& crs, const std::string& path) {
+std::unique_ptr<OGRSpatialReference> Make3dSrs(const std::string& crs, const std::string& path,
+                                               bool promote = true) {
   if (crs.empty()) return nullptr;
   auto srs = std::make_unique<OGRSpatialReference>();
   if (srs->SetFromUserInput(NormalizeCrsName(crs).c_str()) != OGRERR_NONE)
     throw Error(AtLine(path, 0, "unknown CRS '" + crs + "'"));
   srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  if (srs->GetAxesCount() < 3 && srs->PromoteTo3D(nullptr) != OGRERR_NONE)
+  if (promote && srs->GetAxesCount() < 3 && srs->PromoteTo3D(nullptr) != OGRERR_NONE)
     throw Error(AtLine(path, 0, "cannot promote CRS '" + crs + "' to 3D"));
   return srs;
 }
@@ -278,7 +281,8 @@ void OgrCityModelWriter::EnsureField(Layer& l, const std::string& name, bool is_
 
 void OgrCityModelWriter::Begin(const std::string& crs, const Envelope3&) {
   GDALDriver* drv = WriteDriver(driver_name_, file_.path());
-  srs_ = Make3dSrs(crs, file_.path());
+  // GeoJSON can only name a CRS by its code, which a promoted 3D CRS lacks.
+  srs_ = Make3dSrs(crs, file_.path(), !EQUAL(driver_name_.c_str(), "GeoJSON"));
   ds_ = OpenOutput(drv, file_, options_.update);
   QuietGdal quiet;
   auto make = [&](const std::string& name, bool building_fields, bool surface_fields) {
@@ -293,6 +297,8 @@ void OgrCityModelWriter::Begin(const std::string& crs, const Envelope3&) {
       field("surface_id", OFTString);
       field("surface_type", OFTString);
       field("surface_index", OFTInteger);
+      // FlatGeobuf sorts features spatially; this restores building order.
+      if (!multi_layer_) field("building_index", OFTInteger);
     } else {
       field("id", OFTString);
     }
@@ -388,11 +394,13 @@ void OgrCityModelWriter::Write(const Building& b) {
     if (!s.id.empty()) f.SetField("surface_id", s.id.c_str());
     f.SetField("surface_type", SurfaceTypeName(s.type));
     f.SetField("surface_index", static_cast<int>(si));
+    if (!multi_layer_) f.SetField("building_index", static_cast<int>(written_));
     std::vector<const Polygon3*> polys;
     for (const auto& p : s.polygons) polys.push_back(&p);
     f.SetGeometryDirectly(MakeMultiPolygon(polys));
     write(sl, &f);
   }
+  ++written_;
 }
 
 void OgrCityModelWriter::End() {
@@ -463,6 +471,7 @@ CityModel ReadOgrCityModel(const std::string& path) {
     Surface surface;
   };
   std::vector<Pending> surfaces;
+  std::map<std::string, int> order;  // building_index of the flat layout
   for (int li = 0; li < ds->GetLayerCount(); ++li) {
     OGRLayer* l = ds->GetLayer(li);
     const std::string lname = l->GetName();
@@ -478,11 +487,14 @@ CityModel ReadOgrCityModel(const std::string& path) {
     const int i_sid = defn->GetFieldIndex("surface_id");
     const int i_type = defn->GetFieldIndex("surface_type");
     const int i_idx = defn->GetFieldIndex("surface_index");
+    const int i_bidx = defn->GetFieldIndex("building_index");
     l->ResetReading();
     for (auto& f : *l) {
       Pending p;
       Building& b = building(f->GetFieldAsString(i_bid));
       p.building = index[b.id];
+      if (i_bidx >= 0 && f->IsFieldSetAndNotNull(i_bidx))
+        order[b.id] = f->GetFieldAsInteger(i_bidx);
       if (flat) read_attributes(*f, b);
       p.index = i_idx >= 0 ? f->GetFieldAsInteger(i_idx) : static_cast<int>(surfaces.size());
       p.surface.type = layer_type;
@@ -506,6 +518,13 @@ CityModel ReadOgrCityModel(const std::string& path) {
     return a.building != b.building ? a.building < b.building : a.index < b.index;
   });
   for (auto& p : surfaces) model.buildings[p.building].surfaces.push_back(std::move(p.surface));
+  if (!order.empty())
+    std::stable_sort(model.buildings.begin(), model.buildings.end(),
+                     [&](const Building& a, const Building& b) {
+                       auto ia = order.find(a.id), ib = order.find(b.id);
+                       return (ia == order.end() ? INT_MAX : ia->second) <
+                              (ib == order.end() ? INT_MAX : ib->second);
+                     });
   return model;
 }
 
@@ -517,7 +536,7 @@ void WriteFeatureLayer(const std::string& path, const std::string& layer_name,
     throw Error(AtLine(path, 0, "cannot tell the vector format from the extension; name it"));
   GDALDriver* drv = WriteDriver(driver, path);
   OutputFile file(path, options.overwrite || options.update);
-  auto srs = Make3dSrs(options.crs, path);
+  auto srs = Make3dSrs(options.crs, path, !EQUAL(driver.c_str(), "GeoJSON"));
   GDALDataset* ds = OpenOutput(drv, file, options.update);
   struct Closer {
     GDALDataset*& ds;

@@ -58,6 +58,7 @@ class OgrCityModelWriter final : public CityModelStreamWriter {
   bool multi_layer_ = true;
   bool in_transaction_ = false;
   int pending_ = 0;
+  size_t written_ = 0;
   std::map<std::string, bool> declared_;
   std::map<std::string, std::unique_ptr<Layer>> layers_;
   std::unique_ptr<OGRSpatialReference> srs_;
