@@ -1,0 +1,100 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/buildings/city_model.h"
+#include "algorithms/simulate/materials.h"
+#include "algorithms/simulate/scene_truth.h"
+
+namespace roofsweep {
+namespace sim {
+
+// A tree: trunk plus an ellipsoidal crown; occludes and casts shadows.
+struct Tree {
+  Eigen::Vector3d base = Eigen::Vector3d::Zero();  // trunk foot on the ground
+  double trunk_height = 3;
+  double crown_radius = 3;
+  double crown_height = 5;  // vertical extent of the crown
+  int material = -1;        // foliage, index into Scene::materials
+  uint32_t seed = 1;
+};
+
+// Oriented rectangle of ground material (road, sidewalk, yard, paint).
+struct GroundRegion {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
+  Eigen::Vector2d axis = Eigen::Vector2d::UnitX();  // unit, along half_size.x()
+  Eigen::Vector2d half_size = Eigen::Vector2d::Ones();
+  int material = -1;
+  bool Contains(const Eigen::Vector2d& p) const {
+    const Eigen::Vector2d d = p - center;
+    const double a = d.dot(axis), b = d.x() * -axis.y() + d.y() * axis.x();
+    return std::abs(a) <= half_size.x() && std::abs(b) <= half_size.y();
+  }
+};
+
+// Flat terrain at height z with a base material and regions on top (a later
+// region wins where they overlap).
+struct GroundLayout {
+  double z = 0;
+  int base_material = -1;
+  std::vector<GroundRegion> regions;
+  int MaterialAt(const Eigen::Vector2d& p) const;  // linear scan; renderer indexes it
+};
+
+struct Scene {
+  CityModel city;
+  std::vector<Material> materials;
+  // Material of every surface: surface_materials[building][surface].
+  std::vector<std::vector<int>> surface_materials;
+  std::vector<Tree> trees;
+  GroundLayout ground;
+  Eigen::Vector4d area = Eigen::Vector4d::Zero();  // min x, min y, max x, max y of the content
+};
+
+struct SceneOptions {
+  double extent_x = 160;  // m, area centred on the origin
+  double extent_y = 160;
+  int building_count = 30;
+  double min_length = 6;  // footprint length range, m
+  double max_length = 40;
+  // Relative frequency of each RoofShape (flat, shed, gable, hip, half-hip,
+  // pyramid, mansard, L, T).
+  std::array<double, 9> shape_weights = {2, 1, 4, 2, 1, 0.7, 0.7, 1.2, 0.8};
+  // Share of placement attempts that put a terraced row of 2-4 houses with
+  // shared walls (party walls) instead of a detached building.
+  double terrace_fraction = 0.25;
+  double aligned_fraction = 0.8;  // buildings parallel to the streets (else any yaw)
+  int tree_count = 20;
+  double street_spacing = 75;  // m between street axes
+  double street_width = 7;
+  double sidewalk_width = 2;
+  // Probability that all faces of a roof share one material (the hard case
+  // where only shading shows the ridge); otherwise faces differ slightly.
+  double same_roof_material = 0.85;
+  // Share of pitched roofs coloured to match the lawn's luminance (red on
+  // green, visible only in hue).
+  double isoluminant_fraction = 0.15;
+  // 1 = natural palette; < 1 pulls roof colours towards the ground colour
+  // (low contrast scenes).
+  double roof_contrast = 1.0;
+  double ground_z = 0;
+};
+
+// A random town quarter: streets with markings and sidewalks, detached
+// buildings of every roof shape, terraces sharing walls, trees, yards.
+Scene GenerateScene(const SceneOptions& options, uint64_t seed);
+
+// A scene around given buildings (e.g. a real CityGML LoD2 model read by
+// io): materials by surface type, flat ground at the lowest ground surface,
+// trees kept off the footprints. Street layout is not inferred.
+Scene SceneFromCityModel(const CityModel& city, const SceneOptions& options, uint64_t seed);
+
+// Buildings, their classified edges, roof planes and the ground markings
+// (borders between ground materials, as 3D segments).
+SceneTruth TruthOf(const Scene& scene);
+
+}  // namespace sim
+}  // namespace roofsweep
