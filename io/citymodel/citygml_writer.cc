@@ -19,6 +19,15 @@ constexpr const char* kRoofTypeCodeSpace =
     "http://www.sig3d.org/codelists/standard/building/2.0/_AbstractBuilding_roofType.xml";
 
 const xmlChar* X(const char* s) { return reinterpret_cast<const xmlChar*>(s); }
+
+// "..._poly_<digits>": the form of the generated polygon ids.
+bool LooksLikePolygonId(const std::string& id) {
+  const auto p = id.rfind("_poly_");
+  if (p == std::string::npos || p + 6 == id.size()) return false;
+  for (size_t i = p + 6; i < id.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(id[i]))) return false;
+  return true;
+}
 }  // namespace
 
 bool IsValidGmlId(const std::string& id) {
@@ -53,13 +62,17 @@ void CityGmlWriter::Check(int rc, const char* what) {
   if (rc < 0) throw Error(AtLine(file_.path(), 0, std::string("XML write failed at ") + what));
 }
 
+bool CityGmlWriter::Taken(const std::string& id) const {
+  return ids_.count(std::hash<std::string>{}(id)) > 0;
+}
+
 std::string CityGmlWriter::UniqueId(const std::string& wanted, const std::string& fallback) {
   std::string id = MakeGmlId(wanted);
-  if (id.empty() || ids_.count(id)) {
+  if (id.empty() || Taken(id) || LooksLikePolygonId(id)) {
     id = fallback;
-    for (int k = 2; ids_.count(id); ++k) id = fallback + "_" + std::to_string(k);
+    for (int k = 2; Taken(id); ++k) id = fallback + "_" + std::to_string(k);
   }
-  ids_.insert(id);
+  ids_.insert(std::hash<std::string>{}(id));
   return id;
 }
 
@@ -99,7 +112,7 @@ void CityGmlWriter::Begin(const std::string& crs, const Envelope3& envelope) {
 
 void CityGmlWriter::Write(const Building& b) {
   if (!writer_) throw Error(AtLine(file_.path(), 0, "CityGmlWriter::Write before Begin"));
-  const std::string bid = UniqueId(b.id, "BLDG_" + std::to_string(ids_.size() + 1));
+  const std::string bid = UniqueId(b.id, "BLDG_" + std::to_string(++buildings_));
   xmlTextWriterStartElement(writer_, X("core:cityObjectMember"));
   xmlTextWriterStartElement(writer_, X("bldg:Building"));
   xmlTextWriterWriteAttribute(writer_, X("gml:id"), X(bid.c_str()));
@@ -143,7 +156,7 @@ void CityGmlWriter::Write(const Building& b) {
   for (size_t si = 0; si < b.surfaces.size(); ++si) {
     surface_ids[si] = UniqueId(b.surfaces[si].id, bid + "_surf_" + std::to_string(si));
     for (size_t pi = 0; pi < b.surfaces[si].polygons.size(); ++pi)
-      polygon_ids[si].push_back(UniqueId("", bid + "_poly_" + std::to_string(poly_counter++)));
+      polygon_ids[si].push_back(bid + "_poly_" + std::to_string(poly_counter++));
   }
   if (poly_counter > 0) {
     xmlTextWriterStartElement(writer_, X("bldg:lod2Solid"));

@@ -31,6 +31,7 @@ class CityGmlWriter final : public CityModelStreamWriter {
 
  private:
   std::string UniqueId(const std::string& wanted, const std::string& fallback);
+  bool Taken(const std::string& id) const;
   void Check(int rc, const char* what);
 
   CityModelWriteOptions options_;
@@ -38,9 +39,13 @@ class CityGmlWriter final : public CityModelStreamWriter {
   xmlTextWriterPtr writer_ = nullptr;
   std::string srs_name_;
   int decimals_ = 4;
-  // Every gml:id written so far: xs:ID must be unique in the document. This is
-  // the only per-building state kept (tens of bytes per id).
-  std::unordered_set<std::string> ids_;
+  // Hashes of the building and surface gml:ids written so far (xs:ID must be
+  // unique in the document): the only state that grows with the building
+  // count, one hash per building and surface. Polygon ids are not kept: they
+  // are "<building id>_poly_<k>" and a surface id of that form is replaced,
+  // so they cannot collide. A hash collision only renames an id.
+  std::unordered_set<size_t> ids_;
+  size_t buildings_ = 0;
   std::string buffer_;
 };
 

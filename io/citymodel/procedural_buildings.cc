@@ -83,26 +83,32 @@ Building MakeHip(const std::string& id, double x0, double y0, double z0, double 
   return b;
 }
 
+Building MakeCityBuilding(int i, int cols, double x0, double y0, double z0) {
+  // Non-round coordinates (x.xxx7) catch precision loss in writers.
+  const double x = x0 + 20.0 * (i % cols) + 0.1237;
+  const double y = y0 + 20.0 * (i / cols) + 0.4561;
+  const double z = z0 + 0.25 * (i % 7) + 0.0003;
+  char id[32];
+  std::snprintf(id, sizeof id, "BLDG_%06d", i + 1);
+  Building b = i % 3 == 0   ? MakeBox(id, x, y, z, 10.5, 8.25, 6.5)
+               : i % 3 == 1 ? MakeGable(id, x, y, z, 12.0, 8.0, 5.5, 9.25)
+                            : MakeHip(id, x, y, z, 14.0, 9.0, 6.0, 10.5, 3.0);
+  b.double_attributes["roofsweep_rmse"] = 0.05 + 0.001 * (i % 13);
+  b.string_attributes["source"] = "procedural";
+  for (size_t s = 0; s < b.surfaces.size(); ++s)
+    b.surfaces[s].id = std::string(id) + "_s" + std::to_string(s);
+  return b;
+}
+
+int CityColumns(int n) {
+  return std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
+}
+
 CityModel MakeCity(int n, double x0, double y0, double z0, const std::string& crs) {
   CityModel m;
   m.crs = crs;
-  const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
-  for (int i = 0; i < n; ++i) {
-    // Non-round coordinates (x.xxx7) catch precision loss in writers.
-    const double x = x0 + 20.0 * (i % cols) + 0.1237;
-    const double y = y0 + 20.0 * (i / cols) + 0.4561;
-    const double z = z0 + 0.25 * (i % 7) + 0.0003;
-    char id[32];
-    std::snprintf(id, sizeof id, "BLDG_%06d", i + 1);
-    Building b = i % 3 == 0   ? MakeBox(id, x, y, z, 10.5, 8.25, 6.5)
-                 : i % 3 == 1 ? MakeGable(id, x, y, z, 12.0, 8.0, 5.5, 9.25)
-                              : MakeHip(id, x, y, z, 14.0, 9.0, 6.0, 10.5, 3.0);
-    b.double_attributes["roofsweep_rmse"] = 0.05 + 0.001 * (i % 13);
-    b.string_attributes["source"] = "procedural";
-    for (size_t s = 0; s < b.surfaces.size(); ++s)
-      b.surfaces[s].id = std::string(id) + "_s" + std::to_string(s);
-    m.buildings.push_back(std::move(b));
-  }
+  const int cols = CityColumns(n);
+  for (int i = 0; i < n; ++i) m.buildings.push_back(MakeCityBuilding(i, cols, x0, y0, z0));
   return m;
 }
 

@@ -19,6 +19,11 @@ Building MakeHip(const std::string& id, double x0, double y0, double z0, double 
                  double eave, double ridge, double inset);
 // `n` buildings cycling box/gable/hip on a 20 m grid near (x0, y0), with
 // generic attributes, in `crs`.
+// Building `i` of MakeCity (grid with `cols` columns), for streaming without
+// holding the model.
+Building MakeCityBuilding(int i, int cols, double x0 = 500000, double y0 = 5400000,
+                          double z0 = 100);
+int CityColumns(int n);
 CityModel MakeCity(int n, double x0 = 500000, double y0 = 5400000, double z0 = 100,
                    const std::string& crs = "EPSG:25832");
 
