@@ -79,6 +79,8 @@ void ValidateAgainstSchema(const json& doc, const std::string& path) {
   valijson::ValidationResults results;
   valijson::adapters::NlohmannJsonAdapter adapter(doc);
   if (validator.validate(BlockSchema(), adapter, &results)) return;
+  // The first error is the innermost one; the rest are its enclosing
+  // "failed to validate ..." summaries or independent later errors.
   valijson::ValidationResults::Error first;
   results.popError(first);
   const std::string pointer = JsonPointer(first.context);
@@ -92,8 +94,6 @@ void ValidateAgainstSchema(const json& doc, const std::string& path) {
       // A key that is no valid pointer token; the pointer alone must do.
     }
   }
-  const size_t more = results.numErrors();
-  if (more > 0) message += " [" + std::to_string(more) + " more schema messages]";
   throw Error(message);
 }
 

@@ -8,6 +8,7 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <GeographicLib/TransverseMercator.hpp>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -200,7 +201,11 @@ TEST(BlockManifest, SchemaErrorsNameTheJsonPointer) {
 
   msg = ReadError(
       dir, Edited("\"opk\": [0, 0, 0]}", "\"opk\": [0, 0, 0], \"rotation\": [1,0,0,0,1,0,0,0,1]}"));
-  EXPECT_EQ(msg.rfind(file + ": /images/0", 0), 0u) << msg;
+  EXPECT_EQ(msg.rfind(file + ": /images/0: ", 0), 0u) << msg;
+  msg = ReadError(dir, Edited(", \"opk\": [0, 0, 0]}", "}"));
+  EXPECT_EQ(msg.rfind(file + ": /images/0: Missing required property 'opk'", 0), 0u) << msg;
+  EXPECT_EQ(ReadError(dir, Edited("\"opk\": [0, 0, 0]}", "\"rotation\": [1,0,0,0,1,0,0,0,1]}")),
+            "");
 
   msg = ReadError(dir, Edited("\"ground\"", "\"grund\""));
   EXPECT_EQ(msg.rfind(file + ": /", 0), 0u) << msg;
@@ -422,7 +427,8 @@ TEST(BlockManifest, DtmInAnotherCrsIsResampledIntoTheLocalFrame) {
     }
   }
   EXPECT_GT(valid, 50);
-  EXPECT_LT(worst, 2e-3);  // float storage of ~100 m heights
+  std::printf("linear DTM: %d cells checked, worst height error %.2e m\n", valid, worst);
+  EXPECT_LT(worst, 1e-3);  // lattice interpolation: L² / 4R = 0.2 mm for L = 68 m
   EXPECT_NEAR(block.ground.HeightAt(0, 0), 0.0, 0.01);
 }
 

@@ -216,24 +216,63 @@ GroundModel::Grid ResampleDtm(DtmRaster& dtm, const LocalFrame& frame, const Eig
   if (!(lo.x() <= hi.x())) throw Error(dtm.path() + ": cannot place the block on the DTM");
   dtm.Load(lo.x() - 3, lo.y() - 3, hi.x() + 3, hi.y() + 3);
 
+  // PROJ per cell costs ~4 us, minutes for a 1 m DTM under a 5 km block.
+  // The local -> CRS mapping is smooth, so it is evaluated exactly on a
+  // lattice at two heights and interpolated in between: bilinear across
+  // at most lattice_spacing_m (curvature error L² / 8R, 0.2 mm at 100 m)
+  // and linear along the local vertical (a straight line in ECEF).
+  const double z_a = z_low;
+  const double z_b = z_high > z_low + 1.0 ? z_high : z_low + 100.0;
+  const int step = std::clamp(static_cast<int>(options.lattice_spacing_m / d), 1, 64);
+  std::vector<int> lat_rows, lat_cols;
+  for (int r = 0; r < grid.rows - 1; r += step) lat_rows.push_back(r);
+  lat_rows.push_back(grid.rows - 1);
+  for (int c = 0; c < grid.cols - 1; c += step) lat_cols.push_back(c);
+  lat_cols.push_back(grid.cols - 1);
+  const size_t nc = lat_cols.size();
+  std::vector<Eigen::Vector3d> at_a(lat_rows.size() * nc), at_b(lat_rows.size() * nc);
+  for (size_t i = 0; i < lat_rows.size(); ++i) {
+    for (size_t j = 0; j < nc; ++j) {
+      const Eigen::Vector2d xy = centre(lat_rows[i], lat_cols[j]);
+      at_a[i * nc + j] = frame.ToCrs({xy.x(), xy.y(), z_a});
+      at_b[i * nc + j] = frame.ToCrs({xy.x(), xy.y(), z_b});
+    }
+  }
+
   grid.z.assign(static_cast<size_t>(grid.rows) * static_cast<size_t>(grid.cols),
                 std::numeric_limits<float>::quiet_NaN());
-  double z_guess = 0.5 * (z_low + z_high);
+  size_t i0 = 0;
   for (int r = 0; r < grid.rows; ++r) {
+    while (i0 + 2 < lat_rows.size() && lat_rows[i0 + 1] <= r) ++i0;
+    const size_t i1 = std::min(i0 + 1, lat_rows.size() - 1);
+    const double fr =
+        i1 == i0 ? 0.0 : static_cast<double>(r - lat_rows[i0]) / (lat_rows[i1] - lat_rows[i0]);
+    size_t j0 = 0;
+    double t = 0.5;  // position between z_a and z_b, carried from cell to cell
     for (int c = 0; c < grid.cols; ++c) {
-      const Eigen::Vector2d xy = centre(r, c);
-      double z = z_guess;
+      while (j0 + 2 < nc && lat_cols[j0 + 1] <= c) ++j0;
+      const size_t j1 = std::min(j0 + 1, nc - 1);
+      const double fc =
+          j1 == j0 ? 0.0 : static_cast<double>(c - lat_cols[j0]) / (lat_cols[j1] - lat_cols[j0]);
+      auto lerp = [&](const std::vector<Eigen::Vector3d>& v) {
+        return ((1 - fr) * ((1 - fc) * v[i0 * nc + j0] + fc * v[i0 * nc + j1]) +
+                fr * ((1 - fc) * v[i1 * nc + j0] + fc * v[i1 * nc + j1]))
+            .eval();
+      };
+      const Eigen::Vector3d pa = lerp(at_a), pb = lerp(at_b);
       bool ok = true;
       for (int it = 0; it < options.height_iterations && ok; ++it) {
-        const Eigen::Vector3d crs = frame.ToCrs({xy.x(), xy.y(), z});
-        const double height = dtm.SamplePixel(dtm.CrsToPixel(crs.head<2>()));
+        const Eigen::Vector3d p = pa + t * (pb - pa);
+        const double height = dtm.SamplePixel(dtm.CrsToPixel(p.head<2>()));
         ok = std::isfinite(height);
-        if (ok) z = frame.ToLocal({crs.x(), crs.y(), height}).z();
+        if (ok) t = (height - pa.z()) / (pb.z() - pa.z());
       }
-      if (!ok) continue;
+      if (!ok) {
+        t = 0.5;
+        continue;
+      }
       grid.z[static_cast<size_t>(r) * static_cast<size_t>(grid.cols) + static_cast<size_t>(c)] =
-          static_cast<float>(z);
-      z_guess = z;
+          static_cast<float>(z_a + t * (z_b - z_a));
     }
   }
   return grid;

@@ -25,6 +25,9 @@ struct DtmGridOptions {
   // angle subtended at the earth's centre (0.05° at 5 km); two steps bring
   // the horizontal error below 1 mm for any real block.
   int height_iterations = 2;
+  // Spacing in metres of the lattice on which the local -> CRS mapping is
+  // computed exactly through PROJ; cells in between interpolate it.
+  double lattice_spacing_m = 100.0;
 };
 
 class DtmRaster {
