@@ -1,18 +1,18 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/core/block_manifest.h"
-#include <optional>
 
 namespace roofsweep {
 
 // Options for reading other formats into a manifest (`roofsweep import`).
 struct ImportOptions {
-  std::string crs;                      // -a_srs: CRS of the positions, when the format has none
-  std::string camera_file;              // interior orientation for OPK files (Pix4D .cam, YAML, ...)
-  std::string image_dir;                // where the images are, when not beside the orientation
+  std::string crs;          // -a_srs: CRS of the positions, when the format has none
+  std::string camera_file;  // interior orientation for OPK files (Pix4D .cam, YAML, ...)
+  std::string image_dir;    // where the images are, when not beside the orientation
   std::optional<double> ground_height;  // -ground
   std::string dtm;                      // -dtm
   bool check_images = true;
