@@ -5,6 +5,7 @@
 // output); 2 interrupted (cancelled).
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_string.h>
 #include <gdal.h>
 
 #include <algorithm>

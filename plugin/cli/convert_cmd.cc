@@ -1,0 +1,44 @@
+#include <iostream>
+
+#include "plugin/cli/arg_parser.h"
+#include "plugin/cli/command.h"
+#include "plugin/cli/convert_lib.h"
+
+namespace roofsweep::cli {
+namespace {
+
+int Convert(const std::vector<std::string>& args, Context& ctx) {
+  ConvertRequest r;
+  bool no_check = false;
+  ArgParser p("convert", "Converts a LoD2 model between CityGML 2.0, CityJSON 2.0, CityJSONSeq, "
+                         "GeoPackage and other OGR vector formats.");
+  p.Positional("IN", &r.input, "input model (.gml CityGML 1.0/2.0, .city.json, .city.jsonl, .gpkg)")
+      .Positional("OUT", &r.output, "output model; the format follows the extension unless -of")
+      .Option("-of|-f", &r.write.format, "FORMAT",
+              "CityGML, CityJSON, CityJSONSeq, or a GDAL vector driver (GPKG, FlatGeobuf, GeoJSON)")
+      .Option("-if", &r.input_format, "FORMAT", "input format, when the extension does not tell")
+      .Option("-a_srs", &r.assign_crs, "SRS", "CRS to assign to the output (no reprojection)")
+      .Flag("-overwrite", &r.write.overwrite, "replace an existing output file")
+      .Flag("-update", &r.write.update,
+            "GeoPackage: add or replace roofsweep's layers in an existing file, keep the others")
+      .Flag("-allow_empty", &r.allow_empty, "write a model that has no buildings")
+      .Flag("-no_check", &no_check, "do not run the solid checks (roofsweep_validity attribute)")
+      .Example("roofsweep convert buildings.gml buildings.city.json")
+      .Example("roofsweep convert buildings.city.json city.gpkg -update");
+  if (!p.Parse(args)) return 0;
+  r.write.check_geometry = !no_check;
+  const ConvertSummary s = RunConvert(r, *ctx.progress);
+  if (!ctx.quiet) {
+    std::cout << "Wrote " << r.output << " (" << s.format << "): " << s.buildings << " buildings, "
+              << s.surfaces << " surfaces";
+    if (s.invalid_buildings) std::cout << ", " << s.invalid_buildings << " failing the solid checks";
+    std::cout << "\n";
+  }
+  return 0;
+}
+
+const CommandRegistration kRegistration{
+    {"convert", "convert LoD2 models between CityGML, CityJSON and GeoPackage", Convert}};
+
+}  // namespace
+}  // namespace roofsweep::cli

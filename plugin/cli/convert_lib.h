@@ -1,0 +1,30 @@
+#pragma once
+
+#include <string>
+
+#include "algorithms/core/progress.h"
+#include "io/citymodel/citymodel_io.h"
+
+namespace roofsweep {
+
+struct ConvertRequest {
+  std::string input;
+  std::string output;
+  std::string input_format;  // empty: from the extension / content
+  WriteOptions write;        // format (-of), overwrite, update
+  std::string assign_crs;    // -a_srs: replaces the CRS the input declares
+  bool allow_empty = false;  // write a model with no buildings
+};
+
+struct ConvertSummary {
+  int buildings = 0;
+  int surfaces = 0;
+  int invalid_buildings = 0;  // failing the solid checks (reported, still written)
+  std::string format;
+};
+
+// `roofsweep convert`: reads a LoD2 model in any supported format and writes
+// it in another. A model without buildings is refused unless allow_empty.
+ConvertSummary RunConvert(const ConvertRequest& request, Progress& progress);
+
+}  // namespace roofsweep
