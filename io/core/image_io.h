@@ -21,7 +21,10 @@ ImageInfo ProbeImage(const std::string& path);
 // Reads the whole image as float32 in [0, 1]: CV_32FC3 in R, G, B order for
 // colour images (the first three bands of 3+ band images), CV_32FC1 for grey
 // ones. 16-bit data is scaled by its declared bit depth (NBITS) or 65535.
-// Palette images are expanded. Throws on corrupt or truncated data.
+// Palette images are expanded. Floating-point samples are returned as
+// stored. EXIF orientation is ignored (pixels stay in sensor order, as the
+// interior orientation expects). Throws on corrupt or truncated data and on
+// images smaller than 2x2 pixels.
 cv::Mat ReadImage(const std::string& path);
 
 // Writes an 8-bit RGB (CV_8UC3, R, G, B order) or grey image through GDAL;
