@@ -93,7 +93,7 @@ Eigen::Vector3f EvaluateAlbedo(const Material& m, float u, float v, float footpr
   seed ^= m.seed * 0x9e3779b9u;
   const float s = m.element_size;
   // Large-scale staining common to all patterns.
-  const float stain = FractalNoise(u, v, 0.12f, 4, 0.55f, footprint, seed + 7);
+  const float stain = FractalNoise(u, v, 0.12f, 3, 0.55f, footprint, seed + 7);
   float factor = 1.0f + m.weathering * stain;
   float mix2 = 0.0f;  // share of albedo2
   switch (m.pattern) {
@@ -157,13 +157,13 @@ Eigen::Vector3f EvaluateAlbedo(const Material& m, float u, float v, float footpr
       break;
     }
     case Pattern::kGrass: {
-      factor *= 1.0f + 0.18f * FractalNoise(u, v, 6.0f, 4, 0.6f, footprint, seed + 23);
+      factor *= 1.0f + 0.18f * FractalNoise(u, v, 6.0f, 3, 0.6f, footprint, seed + 23);
       mix2 = m.secondary *
-             Smooth(-0.1f, 0.6f, FractalNoise(u, v, 0.08f, 5, 0.55f, footprint, seed + 29));
+             Smooth(-0.1f, 0.6f, FractalNoise(u, v, 0.08f, 4, 0.55f, footprint, seed + 29));
       break;
     }
     case Pattern::kAsphalt:
-      factor *= 1.0f + 0.12f * FractalNoise(u, v, 10.0f, 4, 0.7f, footprint, seed + 31);
+      factor *= 1.0f + 0.12f * FractalNoise(u, v, 10.0f, 3, 0.7f, footprint, seed + 31);
       mix2 = m.secondary *
              Smooth(0.35f, 0.45f, FractalNoise(u, v, 0.15f, 3, 0.5f, footprint, seed + 37));
       break;

@@ -10,11 +10,9 @@ namespace {
 inline uint32_t Hash32(int32_t i, int32_t j, uint32_t seed) {
   uint32_t h = static_cast<uint32_t>(i) * 0x8da6b343u ^ static_cast<uint32_t>(j) * 0xd8163841u ^
                seed * 0xcb1ab31fu;
-  h ^= h >> 16;
-  h *= 0x7feb352du;
   h ^= h >> 15;
-  h *= 0x846ca68bu;
-  h ^= h >> 16;
+  h *= 0x2c1b3c6du;
+  h ^= h >> 12;
   return h;
 }
 
@@ -30,7 +28,7 @@ inline float Grad(int32_t i, int32_t j, uint32_t seed, float dx, float dy) {
                                  {-0.7071f, 0.7071f},
                                  {0.7071f, -0.7071f},
                                  {-0.7071f, -0.7071f}};
-  const float* g = kG[Hash32(i, j, seed) & 7u];
+  const float* g = kG[(Hash32(i, j, seed) >> 13) & 7u];
   return g[0] * dx + g[1] * dy;
 }
 
@@ -40,9 +38,14 @@ float CellRandom(int32_t i, int32_t j, uint32_t seed) {
   return static_cast<float>(Hash32(i, j, seed ^ 0x5bd1e995u) >> 8) * (1.0f / 16777216.0f);
 }
 
+inline int32_t FastFloor(float x) {
+  const int32_t i = static_cast<int32_t>(x);
+  return i - (x < static_cast<float>(i));
+}
+
 float GradientNoise(float x, float y, uint32_t seed) {
-  const float fx = std::floor(x), fy = std::floor(y);
-  const int32_t i = static_cast<int32_t>(fx), j = static_cast<int32_t>(fy);
+  const int32_t i = FastFloor(x), j = FastFloor(y);
+  const float fx = static_cast<float>(i), fy = static_cast<float>(j);
   const float dx = x - fx, dy = y - fy;
   const float u = Fade(dx), v = Fade(dy);
   const float n00 = Grad(i, j, seed, dx, dy);

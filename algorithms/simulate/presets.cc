@@ -11,8 +11,15 @@ SimulationOptions SimulationPreset(const std::string& name) {
   SimulationOptions o;  // struct defaults are the realistic preset
   o.cameras.attitude_sigma_deg = 1.0;
   o.cameras.position_sigma_m = 0.5;
+  // A built-up quarter: ~45 buildings on 200 x 200 m seen at 8 cm.
+  o.cameras.gsd = 0.08;
+  o.scene.extent_x = o.scene.extent_y = 200;
+  o.scene.building_count = 45;
   if (name == "realistic") return o;
   if (name == "bench") {
+    // 6 views of 2048 x 2048 at 6 cm cover ~200 x 200 m: the 180 m scene.
+    o.cameras.gsd = 0.06;
+    o.scene.extent_x = o.scene.extent_y = 180;
     o.scene.building_count = 30;
     o.cameras.strips = 2;
     o.cameras.images_per_strip = 3;

@@ -25,13 +25,15 @@ struct SimulationOptions {
 // Presets:
 //  easy       no noise, no blur beyond 0.4 px, no haze, hard sun, no shadows,
 //             no trees, every roof face its own material tone; 4 views.
-//  realistic  the default for reported figures: 10 cm GSD, 70/40 % overlap,
+//  realistic  the default for reported figures: ~45 buildings on 200 x 200 m,
+//             8 cm GSD, 70/40 % overlap,
 //             sun 40 deg, shadows, trees, sensor noise, PSF 0.6 px,
 //             vignetting, strip colour differences, 1 deg attitude noise.
 //  hard       hazy low sun contrast (more sky light), 15 % isoluminant roofs
 //             raised to 30 %, roof colours pulled to the ground colour,
 //             more trees, strong noise, 60/25 % overlap (wide baseline).
-//  bench      realistic at 6 views (2 strips x 3) of 2048 x 2048, ~30 buildings.
+//  bench      realistic at 6 views (2 strips x 3) of 2048 x 2048, 6 cm GSD,
+//             30 buildings on 180 x 180 m.
 // Throws roofsweep::Error for an unknown name.
 SimulationOptions SimulationPreset(const std::string& name);
 std::vector<std::string> SimulationPresetNames();
