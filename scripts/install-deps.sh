@@ -11,6 +11,7 @@ core=(
   build-essential cmake ninja-build pkg-config ccache
   libgdal-dev gdal-bin libproj-dev proj-bin libgeographiclib-dev libeigen3-dev
   libopencv-dev libcgal-dev libgtest-dev libbenchmark-dev libtbb-dev
+  libboost-dev  # Boost.Geometry R-tree in algorithms/edges (also pulled in by libcgal-dev)
   libcli11-dev nlohmann-json3-dev libvalijson-dev libcitygml-dev
   # libcitygml's CMake target hard-codes libGL.so/libGLU.so but does not
   # depend on the packages that provide them.

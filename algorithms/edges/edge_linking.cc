@@ -1,0 +1,96 @@
+#include "algorithms/edges/edge_linking.h"
+
+#include <cmath>
+
+namespace roofsweep {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Unit {
+  float x, y;
+};
+
+Unit UnitGradient(const EdgePoint& p) {
+  const float n = std::sqrt(p.gx * p.gx + p.gy * p.gy);
+  return n > 0 ? Unit{p.gx / n, p.gy / n} : Unit{1.f, 0.f};
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angle_deg) {
+  const auto& pts = map.points;
+  const int n = static_cast<int>(pts.size());
+  const float min_cos = static_cast<float>(std::cos(max_angle_deg * kPi / 180.0));
+  std::vector<Unit> unit(n);
+  for (int i = 0; i < n; ++i) unit[i] = UnitGradient(pts[i]);
+
+  // best[2 i + side]: the nearest compatible neighbour on that side of the
+  // tangent (side 0: along +t, t = gradient turned by +90°).
+  std::vector<int> best(2 * static_cast<size_t>(n), -1);
+  auto side_of = [&](int i, int j) {
+    const float dx = pts[j].x - pts[i].x;
+    const float dy = pts[j].y - pts[i].y;
+    const float along = -unit[i].y * dx + unit[i].x * dy;
+    return along > 0 ? 0 : 1;
+  };
+  for (int i = 0; i < n; ++i) {
+    const EdgePoint& p = pts[i];
+    float best_d2[2] = {1e30f, 1e30f};
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int* row = map.index.ptr<int>(p.py + dy);
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int j = row[p.px + dx];
+        if (j < 0 || j == i) continue;
+        if (std::fabs(unit[i].x * unit[j].x + unit[i].y * unit[j].y) < min_cos) continue;
+        const float ex = pts[j].x - p.x;
+        const float ey = pts[j].y - p.y;
+        const float along = -unit[i].y * ex + unit[i].x * ey;
+        const float across = unit[i].x * ex + unit[i].y * ey;
+        if (std::fabs(across) >= std::fabs(along)) continue;
+        const int side = along > 0 ? 0 : 1;
+        const float d2 = ex * ex + ey * ey;
+        if (d2 < best_d2[side]) {
+          best_d2[side] = d2;
+          best[2 * i + side] = j;
+        }
+      }
+    }
+  }
+
+  std::vector<int> link(2 * static_cast<size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
+    for (int side = 0; side < 2; ++side) {
+      const int j = best[2 * i + side];
+      if (j >= 0 && best[2 * j + side_of(j, i)] == i) link[2 * i + side] = j;
+    }
+  }
+
+  std::vector<std::vector<int>> chains;
+  std::vector<char> visited(n, 0);
+  auto walk = [&](int start) {
+    std::vector<int> chain;
+    int prev = -1;
+    int cur = start;
+    while (cur >= 0 && !visited[cur]) {
+      visited[cur] = 1;
+      chain.push_back(cur);
+      const int a = link[2 * cur];
+      const int b = link[2 * cur + 1];
+      const int next = a >= 0 && a != prev ? a : (b != prev ? b : -1);
+      prev = cur;
+      cur = next;
+    }
+    chains.push_back(std::move(chain));
+  };
+  // Open chains first, from an end; what is left are closed loops.
+  for (int i = 0; i < n; ++i) {
+    if (!visited[i] && (link[2 * i] < 0 || link[2 * i + 1] < 0)) walk(i);
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!visited[i]) walk(i);
+  }
+  return chains;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,89 @@
+#pragma once
+
+#include <vector>
+
+#include "algorithms/edges/segment2d.h"
+
+namespace roofsweep {
+
+// Options of ExtractSegments. Lengths in pixels, angles in degrees,
+// gradient magnitudes in intensity units ([0, 1] images) per pixel.
+struct EdgeOptions {
+  // Gradient fusion of the colour bands; grey images always use kGrey.
+  GradientMethod method = GradientMethod::kMax;
+
+  // Standard deviation of the Gaussian applied to each band before the
+  // central-difference gradient.
+  double sigma = 1.0;
+
+  // Hysteresis thresholds on the fused gradient magnitude. Negative means
+  // automatic (the default), from the gradient statistics:
+  //   noise  = median(|grad|) / sqrt(2 ln 2)   (the median of a Rayleigh
+  //            variable is sigma sqrt(2 ln 2); edges and texture only push
+  //            the median up, so the estimate errs on the safe side)
+  //   high   = max(auto_high_factor * noise, auto_min_high)
+  //   low    = auto_low_ratio * high
+  // The median is taken over every second pixel in each direction.
+  double high_threshold = -1;
+  double low_threshold = -1;
+  double auto_high_factor = 2.0;
+  double auto_low_ratio = 0.4;
+  // Floor for the automatic high threshold, for images whose median
+  // gradient is ~0 (noise-free synthetic ones, large saturated areas):
+  // 0.003 is the peak of a 2/255 step blurred with sigma 1, so 8-bit
+  // quantisation contours stay out, while a step of 0.01 (a 16 % edge in
+  // 12-bit data stored as 16 bits, values up to 0.0625) peaks at 0.004.
+  double auto_min_high = 0.003;
+
+  // Edge linking: neighbouring edge points link when their gradient
+  // directions differ by less than this (mod 180°).
+  double link_max_angle = 40.0;
+  // Chains are split where the tangent turns by more than this between the
+  // `tangent_window` points before and after a point.
+  double split_tangent_angle = 30.0;
+  int tangent_window = 6;
+
+  // Line fitting (orthogonal regression, recursive split): no edge point
+  // farther than this from the fitted line...
+  double fit_max_deviation = 1.0;
+  // ...and no systematic curvature: a segment whose residuals follow a
+  // parabola with sagitta above this, significant at 3 standard errors and
+  // explaining at least fit_curve_min_explained of the residual sum of
+  // squares, is split, so arcs are not approximated piecewise (an arc of
+  // radius R then gives pieces of at most sqrt(8 R fit_max_sagitta) px,
+  // shorter than min_length up to R ~ 90 px).
+  double fit_max_sagitta = 0.3;
+  double fit_curve_min_explained = 0.9;
+  // Up to this many points at either end of a piece are dropped while they
+  // lie farther than end_trim_distance from the line through the rest
+  // (corners and junctions, rounded by the smoothing, bend the last points).
+  int end_trim_points = 4;
+  double end_trim_distance = 0.8;
+  // Pieces with fewer edge points are dropped before merging.
+  int min_support = 6;
+
+  // Merging of collinear segments across small gaps.
+  double merge_max_gap = 5.0;     // endpoint to endpoint along the line
+  double merge_max_angle = 2.0;   // between the two directions
+  double merge_max_offset = 1.0;  // endpoint distance to the other line
+  bool merge = true;
+
+  // Segments shorter than this are dropped (Scholze et al. use 15 px).
+  double min_length = 15.0;
+
+  // Side colours are averaged over a strip from side_offset to
+  // side_offset + side_width pixels on each side.
+  double side_offset = 1.5;
+  double side_width = 2.0;
+
+  // Optional fusion (§2.3): segments from these methods that are not
+  // already present in the result of `method` are added. Empty: off.
+  std::vector<GradientMethod> fuse_methods;
+  // A segment counts as present when a kept one lies within this distance
+  // and angle and covers at least this fraction of its length.
+  double fuse_max_distance = 2.0;
+  double fuse_max_angle = 5.0;
+  double fuse_min_overlap = 0.5;
+};
+
+}  // namespace roofsweep

@@ -1,0 +1,199 @@
+#include "algorithms/edges/line_fit.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace roofsweep {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+double AngleBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(std::fabs(Cross(a, b)), a.dot(b));
+}
+
+// Index in [first, last) of the point farthest from the chord between the
+// range's end points (first interior point when all are on the chord).
+int FarthestFromChord(const Points2& p, int first, int last) {
+  const Eigen::Vector2d a = p[first];
+  Eigen::Vector2d d = p[last - 1] - a;
+  const double len = d.norm();
+  int best = first + (last - first) / 2;
+  if (len == 0) return best;
+  d /= len;
+  double best_dist = -1;
+  for (int i = first + 1; i < last - 1; ++i) {
+    const double dist = std::fabs(Cross(d, p[i] - a));
+    if (dist > best_dist) {
+      best_dist = dist;
+      best = i;
+    }
+  }
+  return best;
+}
+
+Points2 Slice(const Points2& p, int first, int last) {
+  return Points2(p.begin() + first, p.begin() + last);
+}
+
+// Drops up to end_trim_points points from each end of [first, last) while
+// they lie more than end_trim_distance from the line through the inner
+// points. Smoothing rounds corners and junctions, so the last few edge
+// points before one bend away; left in, that hook looks like curvature and
+// gets a straight edge split in the middle.
+std::pair<int, int> TrimEnds(const Points2& p, int first, int last, const EdgeOptions& o) {
+  const int k = o.end_trim_points;
+  if (k <= 0 || last - first - 2 * k < std::max(2, o.min_support)) return {first, last};
+  const LineFit inner = FitLine(Slice(p, first + k, last - k));
+  const Eigen::Vector2d n = inner.Normal();
+  auto off = [&](int i) { return std::fabs((p[i] - inner.centroid).dot(n)); };
+  // Trim from the outside in, so a far point beyond a near one still goes.
+  int new_first = first;
+  for (int i = first; i < first + k; ++i) {
+    if (off(i) > o.end_trim_distance) new_first = i + 1;
+  }
+  int new_last = last;
+  for (int i = last - 1; i >= last - k; --i) {
+    if (off(i) > o.end_trim_distance) new_last = std::min(new_last, i);
+  }
+  return {new_first, new_last};
+}
+
+}  // namespace
+
+LineFit FitLine(const Points2& points) {
+  LineFit f;
+  const double n = static_cast<double>(points.size());
+  if (points.empty()) return f;
+  for (const auto& q : points) f.centroid += q;
+  f.centroid /= n;
+  double sxx = 0, sxy = 0, syy = 0;
+  for (const auto& q : points) {
+    const Eigen::Vector2d e = q - f.centroid;
+    sxx += e.x() * e.x();
+    sxy += e.x() * e.y();
+    syy += e.y() * e.y();
+  }
+  // The major axis of the scatter ellipse makes angle 0.5 atan2(2 sxy, sxx - syy).
+  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  f.direction = {std::cos(angle), std::sin(angle)};
+  const Eigen::Vector2d normal = f.Normal();
+  double sum2 = 0;
+  f.t_min = 1e300;
+  f.t_max = -1e300;
+  for (const auto& q : points) {
+    const Eigen::Vector2d e = q - f.centroid;
+    const double r = e.dot(normal);
+    const double t = e.dot(f.direction);
+    sum2 += r * r;
+    f.max_deviation = std::max(f.max_deviation, std::fabs(r));
+    f.t_min = std::min(f.t_min, t);
+    f.t_max = std::max(f.t_max, t);
+  }
+  f.rms = std::sqrt(sum2 / n);
+  return f;
+}
+
+bool IsCurved(const Points2& points, const LineFit& fit, double max_sagitta, double min_explained) {
+  const int n = static_cast<int>(points.size());
+  if (n < 6 || fit.Length() <= 0) return false;
+  const double mid = 0.5 * (fit.t_min + fit.t_max);
+  const double half = 0.5 * fit.Length();
+  const Eigen::Vector2d normal = fit.Normal();
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  std::vector<double> us(n), rs(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d e = points[i] - fit.centroid;
+    const double u = (e.dot(fit.direction) - mid) / half;
+    const double r = e.dot(normal);
+    const Eigen::Vector3d row(1, u, u * u);
+    ata += row * row.transpose();
+    atb += row * r;
+    us[i] = u;
+    rs[i] = r;
+  }
+  const Eigen::Matrix3d inv = ata.inverse();
+  if (!inv.allFinite()) return false;
+  const Eigen::Vector3d coef = inv * atb;
+  const double sagitta = std::fabs(coef.z());
+  if (sagitta <= max_sagitta) return false;
+  double sse = 0;
+  for (int i = 0; i < n; ++i) {
+    const double e = rs[i] - (coef.x() + coef.y() * us[i] + coef.z() * us[i] * us[i]);
+    sse += e * e;
+  }
+  double sse_line = 0;
+  for (int i = 0; i < n; ++i) sse_line += rs[i] * rs[i];
+  // An arc's residuals are a parabola; a straight edge of a real image
+  // wiggles (texture, JPEG blocks, noise) and a parabola explains only part
+  // of that wiggle even where its sagitta is large.
+  const double explained = sse_line > 0 ? 1 - sse / sse_line : 0;
+  const double se = std::sqrt(sse / (n - 3) * inv(2, 2));
+  return sagitta > 3 * se && explained >= min_explained;
+}
+
+std::vector<std::pair<int, int>> SplitIntoStraightPieces(const Points2& p, const EdgeOptions& o) {
+  const int n = static_cast<int>(p.size());
+  const int min_support = std::max(2, o.min_support);
+  std::vector<std::pair<int, int>> out;
+  if (n < min_support) return out;
+
+  // 1. Tangent discontinuities.
+  std::vector<std::pair<int, int>> ranges;
+  const int k = std::max(1, o.tangent_window);
+  const double max_turn = o.split_tangent_angle * kPi / 180.0;
+  int start = 0;
+  int i = k;
+  while (i < n - k) {
+    const double turn = AngleBetween(p[i] - p[i - k], p[i + k] - p[i]);
+    if (turn <= max_turn) {
+      ++i;
+      continue;
+    }
+    // Cut at the sharpest point of the run of over-threshold turns.
+    int sharpest = i;
+    double sharpest_turn = turn;
+    int j = i + 1;
+    for (; j < n - k; ++j) {
+      const double tj = AngleBetween(p[j] - p[j - k], p[j + k] - p[j]);
+      if (tj <= max_turn) break;
+      if (tj > sharpest_turn) {
+        sharpest_turn = tj;
+        sharpest = j;
+      }
+    }
+    ranges.emplace_back(start, sharpest);
+    start = sharpest + 1;
+    i = j;
+  }
+  ranges.emplace_back(start, n);
+
+  // 2. Recursive split.
+  std::vector<std::pair<int, int>> stack(ranges.rbegin(), ranges.rend());
+  while (!stack.empty()) {
+    const std::pair<int, int> range = stack.back();
+    stack.pop_back();
+    if (range.second - range.first < min_support) continue;
+    const auto [first, last] = TrimEnds(p, range.first, range.second, o);
+    const Points2 piece = Slice(p, first, last);
+    const LineFit fit = FitLine(piece);
+    if (fit.max_deviation <= o.fit_max_deviation &&
+        !IsCurved(piece, fit, o.fit_max_sagitta, o.fit_curve_min_explained)) {
+      out.emplace_back(first, last);
+      continue;
+    }
+    const int cut = FarthestFromChord(p, first, last);
+    // Pushed in reverse so that pieces come out in chain order.
+    stack.emplace_back(cut + 1, last);
+    stack.emplace_back(first, cut);
+  }
+  return out;
+}
+
+}  // namespace roofsweep

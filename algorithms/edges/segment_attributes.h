@@ -1,0 +1,23 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "algorithms/edges/line_pieces.h"
+#include "algorithms/edges/segment2d.h"
+
+namespace roofsweep {
+
+// Endpoints (the extreme edge points projected onto the fitted line, moved
+// out by half a pixel: each point stands for one pixel's piece of edge),
+// contrast (mean fused magnitude of its points), RMS residual, support, and
+// the carrying band: for kMax the band with the largest summed magnitude
+// over the points, kFused for Di Zenzo, kGrey for grey.
+Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, GradientMethod method);
+
+// Mean colour of the strips [offset, offset + width] px on either side of
+// the segment, sampled bilinearly every pixel along it and every pixel
+// across; samples outside the image are skipped (zero colour when none).
+// `image` is the CV_32FC3 or CV_32FC1 input.
+void MeasureSideColours(Segment2D& segment, const cv::Mat& image, double offset, double width);
+
+}  // namespace roofsweep
