@@ -27,6 +27,19 @@ bool NearestPointToAxes(const Block& block, Eigen::Vector3d* point) {
   return true;
 }
 
+// The convergence point is a scene only if it lies in front of every camera,
+// farther than half the spread of the cameras (else the axes diverge and
+// merely pass close to each other near the cameras).
+bool InFrontOfAll(const Block& block, const Eigen::Vector3d& p) {
+  double spread = 0;
+  for (const View& a : block.views)
+    for (const View& b : block.views) spread = std::max(spread, (a.pose.C - b.pose.C).norm());
+  for (const View& v : block.views) {
+    if (v.pose.ToCamera(p).z() < 0.5 * spread) return false;
+  }
+  return true;
+}
+
 // Orthonormal 2D coordinates on the plane, for polygon overlap.
 struct PlaneBasis {
   Eigen::Vector3d origin, u, v;
@@ -71,11 +84,14 @@ BlockOverview AnalyzeBlock(const Block& block, const BlockOverviewOptions& optio
     Eigen::Vector3d mean_dir = Eigen::Vector3d::Zero();
     for (const View& v : block.views) mean_dir += v.pose.ViewingDirection();
     Eigen::Vector3d p;
-    if (!NearestPointToAxes(block, &p)) {
-      // Parallel axes and no ground: the scene depth is unknown; use a plane
-      // at the mean focal distance-scaled baseline is arbitrary, so warn.
-      p = centre + mean_dir.normalized() * 1.0;
-      out.warnings.push_back("no ground height and parallel optical axes: GSD and overlaps unknown");
+    if (!NearestPointToAxes(block, &p) || !InFrontOfAll(block, p)) {
+      // Parallel or diverging axes (nadir strips, drones looking outwards):
+      // nothing tells the scene depth, and a guess would print a wrong GSD.
+      out.warnings.push_back(
+          "ground unknown and the optical axes do not converge on a scene: GSD and overlaps not "
+          "computed (give a ground height or DTM)");
+      out.footprints.resize(block.views.size());
+      return out;
     }
     const Eigen::Vector3d n = -mean_dir.normalized();  // facing the cameras
     out.plane = Eigen::Vector4d(n.x(), n.y(), n.z(), -n.dot(p));

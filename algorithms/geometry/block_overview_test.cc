@@ -84,5 +84,19 @@ TEST(BlockOverview, ConvergentViewsWithoutGroundUseScenePlane) {
   EXPECT_GT(o.overlaps[0].fraction, 0.5);
 }
 
+TEST(BlockOverview, DivergingAxesWithoutGroundGiveNoGsd) {
+  Block b = NadirStrip(2, 100);
+  b.ground = GroundModel{};
+  // Tilt the two cameras 30 degrees away from each other.
+  b.views[0].pose.R = PatbToCv(OpkToRotation(0, 30, 0));  // looks towards -x
+  b.views[1].pose.R = PatbToCv(OpkToRotation(0, -30, 0));  // towards +x
+  const BlockOverview o = AnalyzeBlock(b);
+  ASSERT_EQ(o.footprints.size(), 2u);
+  EXPECT_FALSE(o.footprints[0].valid);
+  EXPECT_EQ(o.footprints[0].gsd_m, 0.0);
+  ASSERT_EQ(o.warnings.size(), 1u);
+  EXPECT_NE(o.warnings[0].find("do not converge"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -149,6 +149,11 @@ void ValidateManifest(const BlockManifest& m, bool check_images) {
                  " pixels but camera '" + c.id + "' is " + std::to_string(c.width) + "x" +
                  std::to_string(c.height));
       }
+      try {
+        CheckImageReadable(file);
+      } catch (const Error& e) {
+        Fail(m, at + "/path", e.what());
+      }
     }
   }
   if (m.ground_height && !std::isfinite(*m.ground_height)) {

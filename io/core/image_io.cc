@@ -153,6 +153,27 @@ ImageInfo ProbeImage(const std::string& path) {
   return InfoOf(path, ds.get());
 }
 
+void CheckImageReadable(const std::string& path) {
+  gdal::ErrorCapture errors;
+  gdal::ScopedThreadConfig strict_jpeg("GDAL_ERROR_ON_LIBJPEG_WARNING", "TRUE");
+  DatasetPtr ds = OpenRaster(path, errors);
+  const ImageInfo info = InfoOf(path, ds.get());
+  // Truncation, the usual corruption, shows in the last block of the file;
+  // reading just that block keeps checking a large block cheap (JPEG still
+  // decodes up to it).
+  for (int b = 1; b <= std::min(info.bands, 3); ++b) {
+    GDALRasterBand* band = ds->GetRasterBand(b);
+    int bx = 0, by = 0;
+    band->GetBlockSize(&bx, &by);
+    const int x0 = std::max(0, info.width - bx), y0 = std::max(0, info.height - by);
+    const int w = info.width - x0, h = info.height - y0;
+    std::vector<float> buf(static_cast<size_t>(w) * h);
+    const CPLErr err = band->RasterIO(GF_Read, x0, y0, w, h, buf.data(), w, h, GDT_Float32, 0, 0,
+                                      nullptr);
+    if (err != CE_None || errors.HasFailure()) ThrowReadError(path, errors);
+  }
+}
+
 cv::Mat ReadImage(const std::string& path) {
   gdal::ErrorCapture errors;
   // libjpeg reports a truncated stream as a warning and GDAL then returns

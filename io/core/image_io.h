@@ -18,6 +18,10 @@ struct ImageInfo {
 // is missing or GDAL cannot read it.
 ImageInfo ProbeImage(const std::string& path);
 
+// Reads the header and the last block of pixel data: catches a missing,
+// unreadable or truncated image without decoding all of a large block.
+void CheckImageReadable(const std::string& path);
+
 // Reads the whole image as float32 in [0, 1]: CV_32FC3 in R, G, B order for
 // colour images (the first three bands of 3+ band images), CV_32FC1 for grey
 // ones. 16-bit data is scaled by its declared bit depth (NBITS) or 65535.

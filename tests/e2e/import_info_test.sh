@@ -57,11 +57,12 @@ test_bad_input() {
   sed 's/focal_len: 50.0/focal_len: 0.0/' "$d/cam.yaml" >"$d/zero.yaml"
   expect_fail zero_focal "$out" "focal" -- import opk "$d/good.txt" -camera "$d/zero.yaml" -a_srs EPSG:32632 -o "$out"
 
-  head -c 300 "$d/a.tif" >"$d/trunc.tif" && mv "$d/trunc.tif" "$d/a.tif"
-  expect_fail corrupt_image "$out" "a.tif" -- import opk "$d/good.txt" -camera "$d/cam.yaml" -a_srs EPSG:32632 -o "$out"
-
   expect_fail unknown_format "$out" "bogus" -- import bogus "$d/good.txt" -o "$out"
   expect_fail missing_output_dir "" "nodir" -- import opk "$d/opk.txt" -camera "$d/cam.yaml" -o "$d/nodir/x.json"
+
+  # Last: it damages a.tif.
+  head -c 300 "$d/a.tif" >"$d/trunc.tif" && mv "$d/trunc.tif" "$d/a.tif"
+  expect_fail corrupt_image "$out" "a.tif" -- import opk "$d/good.txt" -camera "$d/cam.yaml" -a_srs EPSG:32632 -o "$out"
 }
 
 test_usage_errors() {
@@ -105,7 +106,7 @@ assert all(3 < i['gsd_m'] < 8 for i in im), [i['gsd_m'] for i in im]" "$WORK/std
   fi
   s=$(shared_or_skip data/multiview/orthority-odm-drone)
   if [[ -n "$s" ]]; then
-    expect_ok import_odm_opensfm import opensfm "$s/opensfm/reconstruction.json" -images "$s/images" -o "$WORK/odm.json" &&
+    expect_ok import_odm_opensfm import opensfm "$s/opensfm/reconstruction.json" -images "$s/images" -dtm "$s/odm_dem/dsm.tif" -o "$WORK/odm.json" &&
       expect_ok info_odm info "$WORK/odm.json" --json &&
       python3 -c "
 import json,sys; j=json.load(open(sys.argv[1])); im=j['images']
