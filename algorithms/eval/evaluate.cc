@@ -72,36 +72,42 @@ std::vector<Overlap> Overlaps(const std::vector<Region>& res, const std::vector<
   return out;
 }
 
-// The one-counterpart rule of the header, for one side. `side_area` gives
-// the judged region's area, `pick` its index in an overlap.
+// The one-counterpart rule of the header, for one side. `pick` gives the
+// judged region's index in an overlap, `other` the counterpart's. Among
+// several counterparts the one of largest intersection over union is taken,
+// so that a plane (or footprint) nested in a larger one of the other model
+// does not steal the match from its true twin.
 struct SideMatch {
-  std::vector<int> best;          // qualifying counterpart of largest overlap, else -1
-  std::vector<int> any_best;      // counterpart of largest overlap regardless of the rule
-  std::vector<double> any_area;   // that overlap
+  std::vector<int> best;          // qualifying counterpart of largest IoU, else -1
+  std::vector<int> any_best;      // counterpart of largest IoU regardless of the rule
   std::vector<double> best_area;  // overlap with `best`
+  std::vector<double> any_area;   // overlap with `any_best`
   int tp = 0;
 };
 
 template <typename Pick, typename Other>
-SideMatch MatchSide(const std::vector<Region>& regions, const std::vector<Overlap>& overlaps,
-                    double fraction, double max_angle_deg, Pick pick, Other other) {
+SideMatch MatchSide(const std::vector<Region>& regions, const std::vector<Region>& others,
+                    const std::vector<Overlap>& overlaps, double fraction, double max_angle_deg,
+                    Pick pick, Other other) {
   SideMatch m;
   const size_t n = regions.size();
   m.best.assign(n, -1);
   m.any_best.assign(n, -1);
-  m.any_area.assign(n, 0);
   m.best_area.assign(n, 0);
-  std::vector<double>& best_area = m.best_area;
+  m.any_area.assign(n, 0);
+  std::vector<double> best_iou(n, -1), any_iou(n, -1);
   for (const Overlap& o : overlaps) {
-    const int i = pick(o);
-    if (o.area > m.any_area[i]) {
+    const int i = pick(o), j = other(o);
+    const double iou = o.area / std::max(regions[i].area + others[j].area - o.area, 1e-12);
+    if (iou > any_iou[i]) {
+      any_iou[i] = iou;
       m.any_area[i] = o.area;
-      m.any_best[i] = other(o);
+      m.any_best[i] = j;
     }
-    if (o.area >= fraction * regions[i].area && o.angle_deg <= max_angle_deg &&
-        o.area > best_area[i]) {
-      best_area[i] = o.area;
-      m.best[i] = other(o);
+    if (o.area >= fraction * regions[i].area && o.angle_deg <= max_angle_deg && iou > best_iou[i]) {
+      best_iou[i] = iou;
+      m.best_area[i] = o.area;
+      m.best[i] = j;
     }
   }
   for (size_t i = 0; i < n; ++i)
@@ -217,9 +223,9 @@ void ScoreGeometry(const eval::RoofPlaneSet& res, const eval::RoofPlaneSet& ref,
     const int r = ref_match.best[t];
     if (r < 0) continue;
     angles.push_back(AngleDeg(res_regions[r].normal, ref_regions[t].normal));
-    ForEachRing(res.planes[r].plan, [&](const eval::Ring2& ring) {
+    ForEachRing(res.planes[r].outline, [&](const eval::Ring2& ring) {
       for (const auto& v : ring) {
-        const double d = DistanceToOutline(v, ref.planes[t].plan);
+        const double d = DistanceToOutline(v, ref.planes[t].outline);
         if (d > o.vertex_max_distance_m) {
           ++g->vertex_outliers;
         } else {
@@ -288,10 +294,10 @@ void ScoreBuildings(const CityModel& result, const CityModel& truth, const EvalO
   const double f = o.building_overlap_fraction;
   // Footprints carry no normal: the angle test is switched off (180°).
   const SideMatch mr = MatchSide(
-      rr, overlaps, f, 180.0, [](const Overlap& x) { return x.res; },
+      rr, rt, overlaps, f, 180.0, [](const Overlap& x) { return x.res; },
       [](const Overlap& x) { return x.ref; });
   const SideMatch mt = MatchSide(
-      rt, overlaps, f, 180.0, [](const Overlap& x) { return x.ref; },
+      rt, rr, overlaps, f, 180.0, [](const Overlap& x) { return x.ref; },
       [](const Overlap& x) { return x.res; });
   BuildingScores& s = out->buildings;
   s.n_result = static_cast<int>(rr.size());
@@ -327,10 +333,10 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
   const std::vector<Overlap> overlaps = Overlaps(rr, rt);
 
   const SideMatch mr = MatchSide(
-      rr, overlaps, options.plane_overlap_fraction, options.max_normal_angle_deg,
+      rr, rt, overlaps, options.plane_overlap_fraction, options.max_normal_angle_deg,
       [](const Overlap& x) { return x.res; }, [](const Overlap& x) { return x.ref; });
   const SideMatch mt = MatchSide(
-      rt, overlaps, options.plane_overlap_fraction, options.max_normal_angle_deg,
+      rt, rr, overlaps, options.plane_overlap_fraction, options.max_normal_angle_deg,
       [](const Overlap& x) { return x.ref; }, [](const Overlap& x) { return x.res; });
   RoofPlaneScores& s = out.roof_planes;
   s.n_result = static_cast<int>(rr.size());

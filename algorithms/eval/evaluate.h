@@ -34,8 +34,11 @@
 //   linked to more than one result plane (over-segmentation); n_n_to_1:
 //   result planes linked to more than one reference plane
 //   (under-segmentation); n_n_to_m: linked clusters with several of both.
-// * Geometry over matched pairs (each TP reference plane with its result
-//   plane of largest overlap among those that make it TP): normal angle
+// * Each plane's counterpart is, among the planes that make it TP, the one
+//   of largest intersection-over-union (so a nested plane of the other model
+//   does not take the place of the true twin).
+// * Geometry over matched pairs (each TP reference plane with its
+//   counterpart): normal angle
 //   median/RMS; vertex RMS = RMS of the plan distances from each vertex of
 //   the result plane's outline to the nearest edge of the reference plane's
 //   outline, distances above vertex_max_distance_m left out as outliers
@@ -45,8 +48,8 @@
 // * Buildings: footprints (GroundSurface union, else roof projection); TP by
 //   the same one-counterpart rule with building_overlap_fraction, no normal
 //   test. Roof-type agreement: fraction of TP reference buildings with a known
-//   (non-zero) roof_type whose best-overlapping result building has the same
-//   SIG3D code.
+//   (non-zero) roof_type whose counterpart (largest IoU) has the same SIG3D
+//   code.
 // * Ratios with a zero denominator are undefined: empty optionals here, null
 //   in JSON, "n/a" in the table; the counts beside them say why.
 
@@ -70,7 +73,7 @@ struct PlaneRecord {
   double plan_area = 0;  // m²
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   bool true_positive = false;
-  int counterpart = -1;         // best plane of the other model by overlap (-1: none)
+  int counterpart = -1;         // in the other model, largest IoU (-1: none)
   double overlap_fraction = 0;  // of this plane's area, with that counterpart
   double angle_deg = 0;         // with that counterpart
 };

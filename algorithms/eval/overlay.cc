@@ -130,15 +130,15 @@ cv::Mat RenderOverlay(const CityModel& result, const CityModel& truth, const Eva
   cv::Mat img(map_rows + kLegendHeight + 16, cols, CV_8UC3, kWhite);
 
   for (size_t i = 0; i < ref.planes.size(); ++i) {
-    const auto rings = Rings(ref.planes[i].plan, f);
+    const auto rings = Rings(ref.planes[i].outline, f);
     cv::fillPoly(img, rings,
                  eval.reference_planes[i].true_positive ? kRefMatchedFill : kRefMissedFill,
                  cv::LINE_AA, kShift);
   }
   for (const auto& p : ref.planes)
-    cv::polylines(img, Rings(p.plan, f), true, kRefOutline, 1, cv::LINE_AA, kShift);
+    cv::polylines(img, Rings(p.outline, f), true, kRefOutline, 1, cv::LINE_AA, kShift);
   for (size_t i = 0; i < res.planes.size(); ++i)
-    cv::polylines(img, Rings(res.planes[i].plan, f), true,
+    cv::polylines(img, Rings(res.planes[i].outline, f), true,
                   eval.result_planes[i].true_positive ? kResCorrect : kResFalse, 2, cv::LINE_AA,
                   kShift);
   cv::line(img, {0, map_rows}, {cols - 1, map_rows}, cv::Scalar(160, 160, 160), 1);

@@ -1,25 +1,30 @@
 #include "algorithms/eval/plan_geometry.h"
 
-// Boost.Geometry rather than CGAL's Boolean_set_operations_2: the evaluator
-// needs areas of intersections and unions of many small polygons in double
-// precision, which Boost.Geometry does robustly (its rescaling policy) at a
-// fraction of CGAL's compile cost, and with no exact-kernel conversions. It
-// comes with libboost-dev, which CGAL already depends on.
+// CGAL's Boolean_set_operations_2 with the exact-constructions kernel, not
+// Boost.Geometry: Boost.Geometry 1.74 (Debian bookworm) returned the whole
+// of the smaller polygon as the intersection of two roof planes of a Berlin
+// LoD2 tile that only touch (vertices 2 mm apart), in projected and in local
+// coordinates alike. An evaluator must not miscount like that; exact
+// arithmetic cannot. CGAL stays in this one file (compile cost).
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/multi_polygon.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
+#include <iterator>
+#include <limits>
 
 namespace roofsweep::eval {
-namespace bg = boost::geometry;
 namespace {
 
-using BPoint = bg::model::d2::point_xy<double>;
-using BPolygon = bg::model::polygon<BPoint, /*ClockWise=*/false, /*Closed=*/true>;
-using BMulti = bg::model::multi_polygon<BPolygon>;
-using BRing = BPolygon::ring_type;
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using CPoint = K::Point_2;
+using CPolygon = CGAL::Polygon_2<K>;
+using CPolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
+using CSet = CGAL::Polygon_set_2<K>;
 
 // Removes consecutive duplicates (and the closing repeat) so that a ring of
 // fewer than three distinct points is recognised as degenerate.
@@ -31,39 +36,147 @@ Ring2 Distinct(const Ring2& r) {
   return out;
 }
 
-BRing ToBoost(const Ring2& r) {
-  BRing out;
-  for (const auto& p : r) out.push_back(BPoint(p.x(), p.y()));
-  if (!r.empty()) out.push_back(BPoint(r.front().x(), r.front().y()));
-  return out;
+double Cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
 }
 
-BMulti ToBoost(const MultiPolygon2& m) {
-  BMulti out;
-  for (const auto& p : m) {
-    BPolygon bp;
-    bp.outer() = ToBoost(p.outer);
-    for (const auto& h : p.holes) bp.inners().push_back(ToBoost(h));
-    out.push_back(std::move(bp));
+// Drops vertices within `tol` of the line through their neighbours, until
+// none is left, so that merged coplanar pieces give clean outlines.
+Ring2 DropCollinear(Ring2 r, double tol) {
+  bool changed = true;
+  while (changed && r.size() > 3) {
+    changed = false;
+    for (size_t i = 0; i < r.size() && r.size() > 3; ++i) {
+      const Eigen::Vector2d& a = r[(i + r.size() - 1) % r.size()];
+      const Eigen::Vector2d& b = r[(i + 1) % r.size()];
+      const Eigen::Vector2d d = b - a;
+      const double len = d.norm();
+      const Eigen::Vector2d ap = r[i] - a;
+      const double off = len > 0 ? std::abs(d.x() * ap.y() - d.y() * ap.x()) / len : ap.norm();
+      const double t = len > 0 ? ap.dot(d) / (len * len) : 0;
+      if (off <= tol && t > 0 && t < 1) {
+        r.erase(r.begin() + static_cast<long>(i));
+        changed = true;
+      }
+    }
   }
-  return out;
+  return r;
 }
 
-Ring2 FromBoost(const BRing& r) {
-  Ring2 out;
-  for (size_t i = 0; i + 1 < r.size(); ++i) out.emplace_back(bg::get<0>(r[i]), bg::get<1>(r[i]));
-  return out;
+// Relative to the first vertex: with projected coordinates (~6e6 m) the
+// plain shoelace sum loses all but a few bits of a small roof's area.
+double SignedArea(const Ring2& r) {
+  double a = 0;
+  for (size_t i = 1; i + 1 < r.size(); ++i) a += Cross2(r[i] - r[0], r[i + 1] - r[0]);
+  return 0.5 * a;
 }
 
-MultiPolygon2 FromBoost(const BMulti& m) {
+CPolygon ToCgal(const Ring2& r) {
+  CPolygon p;
+  for (const auto& v : r) p.push_back(CPoint(v.x(), v.y()));
+  return p;
+}
+
+Ring2 FromCgal(const CPolygon& p) {
+  Ring2 r;
+  for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it)
+    r.emplace_back(CGAL::to_double(it->x()), CGAL::to_double(it->y()));
+  return r;
+}
+
+// A region's pieces as one exact point set. MakeRegion has checked that
+// every ring is simple, which CGAL requires (unchecked in release builds).
+CSet ToSet(const MultiPolygon2& m) {
+  CSet s;
+  for (const auto& p : m) {
+    CPolygon outer = ToCgal(p.outer);
+    if (outer.orientation() != CGAL::COUNTERCLOCKWISE) outer.reverse_orientation();
+    CSet piece(outer);
+    // Holes by difference: robust to holes that touch the outer ring or
+    // each other, which a Polygon_with_holes_2 may not have.
+    for (const auto& h : p.holes) {
+      CPolygon hole = ToCgal(h);
+      if (hole.orientation() != CGAL::COUNTERCLOCKWISE) hole.reverse_orientation();
+      piece.difference(hole);
+    }
+    s.join(piece);
+  }
+  return s;
+}
+
+MultiPolygon2 FromSet(const CSet& s) {
+  std::vector<CPolygonWithHoles> parts;
+  s.polygons_with_holes(std::back_inserter(parts));
   MultiPolygon2 out;
-  for (const auto& bp : m) {
+  for (const auto& pwh : parts) {
+    if (pwh.is_unbounded()) continue;
     Polygon2 p;
-    p.outer = FromBoost(bp.outer());
-    for (const auto& h : bp.inners()) p.holes.push_back(FromBoost(h));
+    p.outer = DropCollinear(FromCgal(pwh.outer_boundary()), 1e-4);
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+      p.holes.push_back(DropCollinear(FromCgal(*h), 1e-4));
     out.push_back(std::move(p));
   }
   return out;
+}
+
+double AreaOfSet(const CSet& s) {
+  std::vector<CPolygonWithHoles> parts;
+  s.polygons_with_holes(std::back_inserter(parts));
+  double a = 0;
+  for (const auto& pwh : parts) {
+    a += std::abs(CGAL::to_double(pwh.outer_boundary().area()));
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+      a -= std::abs(CGAL::to_double(h->area()));
+  }
+  return a;
+}
+
+double PointSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double l2 = d.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+  return (a + t * d - p).norm();
+}
+
+double SegmentSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                      const Eigen::Vector2d& d) {
+  const double d1 = Cross2(b - a, c - a), d2 = Cross2(b - a, d - a);
+  const double d3 = Cross2(d - c, a - c), d4 = Cross2(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+    return 0;  // proper crossing
+  return std::min(
+      {PointSegment(a, c, d), PointSegment(b, c, d), PointSegment(c, a, b), PointSegment(d, a, b)});
+}
+
+// Even-odd test against one piece (outer ring and its holes).
+bool InsidePiece(const Eigen::Vector2d& p, const Polygon2& poly) {
+  bool in = false;
+  auto ring = [&](const Ring2& r) {
+    for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+      if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+          p.x() < r[i].x() + (p.y() - r[i].y()) * (r[j].x() - r[i].x()) / (r[j].y() - r[i].y()))
+        in = !in;
+  };
+  ring(poly.outer);
+  for (const auto& h : poly.holes) ring(h);
+  return in;
+}
+
+bool Inside(const Eigen::Vector2d& p, const MultiPolygon2& m) {
+  for (const auto& poly : m)
+    if (InsidePiece(p, poly)) return true;
+  return false;
+}
+
+template <typename F>
+void ForEachEdge(const MultiPolygon2& m, F f) {
+  for (const auto& p : m) {
+    auto ring = [&](const Ring2& r) {
+      for (size_t i = 0; i < r.size(); ++i) f(r[i], r[(i + 1) % r.size()]);
+    };
+    ring(p.outer);
+    for (const auto& h : p.holes) ring(h);
+  }
 }
 
 }  // namespace
@@ -96,53 +209,64 @@ Box2 BoundsOf(const MultiPolygon2& m) {
   return b;
 }
 
-MultiPolygon2 Union(const std::vector<Polygon2>& polygons, UnionStats* stats) {
+MultiPolygon2 MakeRegion(const std::vector<Polygon2>& polygons, UnionStats* stats) {
   UnionStats local;
-  BMulti acc;
+  MultiPolygon2 out;
   for (const auto& in : polygons) {
-    const Ring2 outer = Distinct(in.outer);
-    if (outer.size() < 3) {
+    Polygon2 piece;
+    piece.outer = Distinct(in.outer);
+    if (piece.outer.size() < 3 || std::abs(SignedArea(piece.outer)) < 1e-9) {
       ++local.degenerate;
       continue;
     }
-    BPolygon bp;
-    bp.outer() = ToBoost(outer);
-    for (const auto& h : in.holes) {
-      const Ring2 hole = Distinct(h);
-      if (hole.size() >= 3) bp.inners().push_back(ToBoost(hole));
-    }
-    bg::correct(bp);  // orientation and closure as the polygon type wants
-    if (std::abs(bg::area(bp)) < 1e-9) {
-      ++local.degenerate;
-      continue;
-    }
-    if (!bg::is_valid(bp)) {
+    if (!ToCgal(piece.outer).is_simple()) {
       ++local.invalid;
       continue;
     }
-    BMulti next;
-    bg::union_(acc, bp, next);
-    acc.swap(next);
+    if (SignedArea(piece.outer) < 0) std::reverse(piece.outer.begin(), piece.outer.end());
+    for (const auto& h : in.holes) {
+      Ring2 hole = Distinct(h);
+      if (hole.size() < 3 || std::abs(SignedArea(hole)) < 1e-9) continue;
+      if (!ToCgal(hole).is_simple()) {
+        ++local.invalid;
+        continue;
+      }
+      if (SignedArea(hole) > 0) std::reverse(hole.begin(), hole.end());
+      piece.holes.push_back(std::move(hole));
+    }
+    out.push_back(std::move(piece));
   }
-  BMulti simplified;
-  bg::simplify(acc, simplified, 1e-4);
-  // simplify may in rare cases spoil validity; fall back to the exact union.
-  if (!bg::is_valid(simplified)) simplified = acc;
   if (stats) *stats = local;
-  return FromBoost(simplified);
+  return out;
 }
 
-double Area(const MultiPolygon2& m) { return bg::area(ToBoost(m)); }
+MultiPolygon2 Outline(const MultiPolygon2& region) { return FromSet(ToSet(region)); }
+
+double Area(const MultiPolygon2& region) {
+  if (region.size() == 1 && region[0].holes.empty()) return std::abs(SignedArea(region[0].outer));
+  return AreaOfSet(ToSet(region));
+}
 
 double IntersectionArea(const MultiPolygon2& a, const MultiPolygon2& b) {
   if (a.empty() || b.empty() || !BoundsOf(a).Intersects(BoundsOf(b))) return 0;
-  BMulti out;
-  bg::intersection(ToBoost(a), ToBoost(b), out);
-  return std::max(0.0, static_cast<double>(bg::area(out)));
+  CSet s = ToSet(a);
+  s.intersection(ToSet(b));
+  return std::max(0.0, AreaOfSet(s));
 }
 
 double Distance(const MultiPolygon2& a, const MultiPolygon2& b) {
-  return bg::distance(ToBoost(a), ToBoost(b));
+  if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
+  for (const auto& p : a)
+    if (Inside(p.outer[0], b)) return 0;
+  for (const auto& p : b)
+    if (Inside(p.outer[0], a)) return 0;
+  double best = std::numeric_limits<double>::infinity();
+  ForEachEdge(a, [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+    ForEachEdge(b, [&](const Eigen::Vector2d& r, const Eigen::Vector2d& s) {
+      best = std::min(best, SegmentSegment(p, q, r, s));
+    });
+  });
+  return best;
 }
 
 }  // namespace roofsweep::eval

@@ -4,7 +4,7 @@
 #include <vector>
 
 // Plan-view (xy) polygon algebra for the evaluator. The types are plain Eigen
-// so that Boost.Geometry stays inside plan_geometry.cc (it is header-heavy).
+// so that CGAL (exact Boolean operations) stays inside plan_geometry.cc.
 
 namespace roofsweep::eval {
 
@@ -16,8 +16,12 @@ struct Polygon2 {
   std::vector<Ring2> holes;
 };
 
-// Disjoint polygons; what Union returns is valid (outer rings
-// counter-clockwise, holes clockwise, no repeated closing vertex).
+// A plan-view region: the union of its polygons. As made by MakeRegion,
+// each polygon has a simple, counter-clockwise outer ring and simple
+// clockwise holes; polygons may touch or overlap each other. The pieces are
+// kept as they came rather than merged, because a merged outline rounded to
+// doubles can touch itself or cross (seen on Berlin LoD2 roofs), and exact
+// clipping needs simple rings. Area and IntersectionArea merge exactly.
 using MultiPolygon2 = std::vector<Polygon2>;
 
 struct Box2 {
@@ -32,22 +36,25 @@ struct Box2 {
 
 Box2 BoundsOf(const MultiPolygon2& m);
 
-// How many input polygons Union had to leave out.
+// How many input polygons MakeRegion had to leave out.
 struct UnionStats {
   int degenerate = 0;  // fewer than 3 distinct vertices or no area
-  int invalid = 0;     // self-intersecting after orientation repair
+  int invalid = 0;     // outer ring or a hole not simple (self-touching or crossing)
 };
 
-// Union of plan-view polygons (touching, overlapping or apart). Rings are
-// re-oriented as needed; degenerate and self-intersecting polygons are left
-// out and counted, because a clipping library gives undefined answers for
-// them. Collinear vertices (closer than 0.1 mm to the line through their
-// neighbours) are removed, so that coplanar pieces merge into clean outlines.
-MultiPolygon2 Union(const std::vector<Polygon2>& polygons, UnionStats* stats = nullptr);
+// The region covered by `polygons` (any ring orientation). Degenerate and
+// non-simple polygons are left out and counted, because clipping is
+// undefined for them; a non-simple hole is left out, its polygon kept.
+MultiPolygon2 MakeRegion(const std::vector<Polygon2>& polygons, UnionStats* stats = nullptr);
 
-double Area(const MultiPolygon2& m);
+// The merged outline of a region, for drawing and for vertex distances:
+// disjoint polygons, collinear vertices (within 0.1 mm) removed. Rings may
+// touch themselves, so this is not a region to clip with.
+MultiPolygon2 Outline(const MultiPolygon2& region);
+
+double Area(const MultiPolygon2& region);  // of the union, m²
 double IntersectionArea(const MultiPolygon2& a, const MultiPolygon2& b);
-// Smallest distance between the two areas (0 when they touch or overlap).
+// Smallest distance between the two regions (0 when they touch or overlap).
 double Distance(const MultiPolygon2& a, const MultiPolygon2& b);
 
 }  // namespace roofsweep::eval

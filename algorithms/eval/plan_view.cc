@@ -73,7 +73,7 @@ RoofPlaneSet ExtractRoofPlanes(const CityModel& model, const RoofPlaneOptions& o
           continue;
         }
         UnionStats stats;
-        MultiPolygon2 plan = Union({ProjectXY(poly)}, &stats);
+        MultiPolygon2 plan = MakeRegion({ProjectXY(poly)}, &stats);
         set.degenerate_polygons += stats.degenerate;
         set.invalid_polygons += stats.invalid;
         if (plan.empty()) continue;
@@ -125,7 +125,8 @@ RoofPlaneSet ExtractRoofPlanes(const CityModel& model, const RoofPlaneOptions& o
     for (size_t g = 0; g < pieces.size(); ++g) {
       RoofPlane& plane = set.planes[first + g];
       plane.normal = normal_sum[g].normalized();
-      plane.plan = pieces[g].size() == 1 ? MultiPolygon2{pieces[g][0]} : Union(pieces[g]);
+      plane.plan = std::move(pieces[g]);  // already checked by MakeRegion
+      plane.outline = Outline(plane.plan);
       plane.plan_area = Area(plane.plan);
       plane.box = BoundsOf(plane.plan);
     }
@@ -144,7 +145,7 @@ MultiPolygon2 BuildingFootprint(const Building& building, const RoofPlaneOptions
         if (std::abs(p.Normal().z()) >= min_nz) roof.push_back(ProjectXY(p));
     }
   }
-  return Union(ground.empty() ? roof : ground);
+  return MakeRegion(ground.empty() ? roof : ground);
 }
 
 }  // namespace roofsweep::eval

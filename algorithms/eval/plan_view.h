@@ -31,8 +31,9 @@ struct RoofPlane {
   int building = -1;                                  // index into CityModel::buildings
   std::vector<std::pair<int, int>> polygons;          // (surface index, polygon index)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, z >= 0, area-weighted
-  MultiPolygon2 plan;                                 // union of the xy projections
-  double plan_area = 0;                               // m²
+  MultiPolygon2 plan;                                 // region: the xy projections of its polygons
+  MultiPolygon2 outline;  // merged outline of `plan` (drawing, vertex distances)
+  double plan_area = 0;   // m²
   Box2 box;
 };
 
