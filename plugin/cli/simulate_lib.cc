@@ -1,0 +1,221 @@
+#include "plugin/cli/simulate_lib.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "algorithms/core/error.h"
+#include "algorithms/geometry/rotation.h"
+#include "io/citymodel/citymodel_io.h"
+#include "io/citymodel/segments_json.h"
+#include "io/core/block_manifest.h"
+#include "io/core/image_io.h"
+#include "io/core/local_frame.h"
+#include "io/orientation/block_source.h"
+
+namespace fs = std::filesystem;
+
+namespace roofsweep {
+namespace {
+
+// Removes a half-written output folder unless the run completed.
+class TempFolder {
+ public:
+  explicit TempFolder(const std::string& final_dir) {
+    const fs::path target = fs::absolute(final_dir);
+    path_ = (target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                     std::to_string(::getpid())))
+                .string();
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    if (!committed_) fs::remove_all(path_, ec);
+  }
+  const std::string& path() const { return path_; }
+  void CommitTo(const std::string& final_dir) {
+    std::error_code ec;
+    fs::remove_all(final_dir, ec);
+    fs::rename(path_, final_dir);
+    committed_ = true;
+  }
+
+ private:
+  std::string path_;
+  bool committed_ = false;
+};
+
+void CheckOutputFolder(const std::string& dir, bool overwrite) {
+  if (dir.empty()) throw Error("simulate: no output folder given (-o DIR)");
+  const fs::path p = fs::absolute(dir);
+  if (!fs::is_directory(p.parent_path())) {
+    throw Error(dir + ": the folder it would be created in does not exist");
+  }
+  if (fs::exists(p) && !overwrite) {
+    throw Error(dir + ": already exists; use -overwrite to replace it");
+  }
+}
+
+void WriteText(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+  if (!f) throw Error(path + ": cannot write");
+}
+
+std::string CameraYaml(const Camera& c) {
+  // orthority's interior parameters: focal length and sensor size in the same
+  // unit (mm), principal point as an offset from the image centre in units
+  // of the larger image side (see io/orientation/orthority_yaml.cc).
+  const double px_mm = c.pixel_size_mm > 0 ? c.pixel_size_mm : 0.0046;
+  const double s = std::max(c.width, c.height);
+  char buf[1024];
+  std::snprintf(buf, sizeof buf,
+                "%s:\n    type: %s\n    im_size: [%d, %d]\n    focal_len: [%.12g, %.12g]\n"
+                "    sensor_size: [%.12g, %.12g]\n    cx: %.15g\n    cy: %.15g\n",
+                c.id.c_str(), c.HasDistortion() ? "brown" : "pinhole", c.width, c.height,
+                c.fx * px_mm, c.fy * px_mm, c.width * px_mm, c.height * px_mm,
+                (c.cx - c.width / 2.0) / s, (c.cy - c.height / 2.0) / s);
+  std::string out = buf;
+  if (c.HasDistortion()) {
+    std::snprintf(buf, sizeof buf,
+                  "    k1: %.15g\n    k2: %.15g\n    k3: %.15g\n    p1: %.15g\n    p2: %.15g\n",
+                  c.k1, c.k2, c.k3, c.p1, c.p2);
+    out += buf;
+  }
+  return out;
+}
+
+// Every vertex of `model` through `f`.
+template <typename F>
+void TransformModel(CityModel* model, F f) {
+  for (Building& b : model->buildings)
+    for (Surface& s : b.surfaces)
+      for (Polygon3& p : s.polygons) {
+        for (auto& v : p.exterior) v = f(v);
+        for (auto& h : p.holes)
+          for (auto& v : h) v = f(v);
+      }
+}
+
+}  // namespace
+
+SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
+  CheckOutputFolder(r.output_dir, r.overwrite);
+  sim::SimulationOptions o = sim::SimulationPreset(r.preset);
+  o.seed = r.seed;
+  if (r.strips > 0) o.cameras.strips = r.strips;
+  if (r.images_per_strip > 0) o.cameras.images_per_strip = r.images_per_strip;
+  if (r.image_size > 0) o.cameras.image_width = o.cameras.image_height = r.image_size;
+  if (r.gsd > 0) o.cameras.gsd = r.gsd;
+  if (r.buildings >= 0) o.scene.building_count = r.buildings;
+  if (r.obliques) o.cameras.obliques = true;
+  std::string ext = r.image_format.empty() ? (r.preset == "easy" ? "png" : "jpg") : r.image_format;
+  if (ext == "jpeg") ext = "jpg";
+  if (ext != "jpg" && ext != "tif" && ext != "png") {
+    throw Error("simulate: image format '" + ext + "' is not one of jpg, tif, png");
+  }
+
+  // A real model is rendered in its own CRS at its own place: the local
+  // frame's origin is the model's plan centre at its lowest point.
+  std::string crs = r.crs;
+  Eigen::Vector3d origin = r.origin;
+  CityModel input;
+  if (!r.citygml.empty()) {
+    input = ReadCityModel(r.citygml);
+    if (input.buildings.empty()) throw Error(r.citygml + ": no buildings to simulate");
+    if (!input.crs.empty()) crs = input.crs;
+    const auto b = input.Bounds();
+    origin = Eigen::Vector3d((b(0) + b(3)) / 2, (b(1) + b(4)) / 2, b(2));
+  }
+  const LocalFrame frame(crs, origin);
+  if (!r.citygml.empty()) {
+    TransformModel(&input, [&](const Eigen::Vector3d& v) { return frame.ToLocal(v); });
+    input.crs.clear();
+  }
+
+  TempFolder tmp(r.output_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  SubProgress render(progress, 0.0, 0.8);
+  const sim::SimulationResult sim =
+      sim::Simulate(o, render, r.citygml.empty() ? nullptr : &input);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const std::string dir = tmp.path();
+  fs::create_directories(dir + "/images");
+  fs::create_directories(dir + "/orientation");
+  std::string opk = "imageName X Y Z Omega Phi Kappa\n";
+  for (size_t i = 0; i < sim.views.size(); ++i) {
+    const sim::SimulatedView& v = sim.views[i];
+    WriteImage(dir + "/images/" + v.name + "." + ext, sim.images[i], r.jpeg_quality);
+    const Eigen::Vector3d pos = frame.ToCrs(v.pose.C);
+    // Camera-to-grid rotation: camera-to-ENU, then ENU back to grid axes.
+    const Eigen::Matrix3d r_grid = frame.GridToLocal(pos).transpose() * CvToPatb(v.pose.R);
+    const Eigen::Vector3d a = RotationToOpk(r_grid);
+    char line[256];
+    std::snprintf(line, sizeof line, "%s %.6f %.6f %.6f %.10f %.10f %.10f\n", v.name.c_str(),
+                  pos.x(), pos.y(), pos.z(), a(0), a(1), a(2));
+    opk += line;
+    ReportOrCancel(progress, 0.8 + 0.15 * (i + 1) / sim.views.size());
+  }
+  WriteText(dir + "/orientation/opk.txt", opk);
+  // One camera: the layout gives every view the same interior orientation.
+  Camera cam = sim.views.front().camera;
+  cam.id = "simulated";
+  WriteText(dir + "/orientation/camera.yaml", CameraYaml(cam));
+
+  ImportOptions io;
+  io.crs = crs;
+  io.camera_file = dir + "/orientation/camera.yaml";
+  io.image_dir = dir + "/images";
+  io.ground_height = frame.ToCrs(Eigen::Vector3d(0, 0, sim.scene.ground.z)).z();
+  BlockManifest manifest = ImportBlock("opk", {dir + "/orientation/opk.txt"}, io);
+  WriteManifest(manifest, dir + "/block.json", false);
+
+  CityModel truth = sim.truth.city;
+  TransformModel(&truth, [&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
+  truth.crs = crs;
+  WriteCityModel(truth, dir + "/groundtruth.gml");
+
+  SegmentSet edges;
+  edges.crs = crs;
+  for (const sim::TrueEdge& e : sim.truth.edges) {
+    edges.segments.push_back(
+        {{frame.ToCrs(e.a), frame.ToCrs(e.b)}, sim::EdgeKindName(e.kind), e.building});
+  }
+  WriteSegmentsJson(edges, dir + "/groundtruth_edges.json", false);
+
+  SimulateSummary s;
+  s.views = static_cast<int>(sim.views.size());
+  s.buildings = static_cast<int>(truth.buildings.size());
+  s.roof_planes = static_cast<int>(sim.truth.roof_planes.size());
+  s.edges = static_cast<int>(edges.segments.size());
+  s.gsd_m = o.cameras.gsd;
+  s.seconds_render = seconds;
+
+  nlohmann::json meta = {{"preset", r.preset},
+                         {"seed", r.seed},
+                         {"citygml", r.citygml.empty() ? nlohmann::json(nullptr)
+                                                       : nlohmann::json(r.citygml)},
+                         {"crs", crs},
+                         {"origin", {origin.x(), origin.y(), origin.z()}},
+                         {"views", s.views},
+                         {"image_size", {cam.width, cam.height}},
+                         {"gsd_m", s.gsd_m},
+                         {"buildings", s.buildings},
+                         {"roof_planes", s.roof_planes},
+                         {"edges", s.edges},
+                         {"image_format", ext},
+                         {"jpeg_quality", ext == "jpg" ? r.jpeg_quality : 0}};
+  WriteText(dir + "/simulation.json", meta.dump(2) + "\n");
+  tmp.CommitTo(r.output_dir);
+  ReportOrCancel(progress, 1.0);
+  return s;
+}
+
+}  // namespace roofsweep

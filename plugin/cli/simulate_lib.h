@@ -1,0 +1,55 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+
+#include "algorithms/core/progress.h"
+#include "algorithms/simulate/presets.h"
+
+namespace roofsweep {
+
+struct SimulateRequest {
+  std::string preset = "realistic";
+  uint64_t seed = 1;
+  std::string citygml;  // optional: a real LoD2 model to render (any format ReadCityModel reads)
+  // The block is placed in a real CRS so that every later stage works as on
+  // real data: local ENU at `origin` (CRS coordinates, ellipsoidal height of
+  // the ground). A model read from --citygml keeps its own CRS and place.
+  std::string crs = "EPSG:25832";
+  Eigen::Vector3d origin = Eigen::Vector3d(691000.0, 5335000.0, 520.0);
+  std::string image_format;  // jpg, tif or png; empty: the preset's (png for easy, else jpg)
+  int jpeg_quality = 92;
+  std::string output_dir;
+  bool overwrite = false;
+  // Overrides of the preset (0 / negative: keep the preset's value).
+  int strips = 0;
+  int images_per_strip = 0;
+  int image_size = 0;
+  double gsd = 0;
+  int buildings = -1;
+  bool obliques = false;
+};
+
+struct SimulateSummary {
+  int views = 0;
+  int buildings = 0;
+  int roof_planes = 0;
+  int edges = 0;
+  double gsd_m = 0;
+  double seconds_render = 0;
+};
+
+// `roofsweep simulate`: renders the block and writes, into output_dir:
+//   images/<view>.<ext>            the rendered images
+//   orientation/opk.txt            Pix4D-style external orientation (grid OPK)
+//   orientation/camera.yaml        orthority-style interior orientation
+//   block.json                     the manifest, made by importing the two
+//                                  files above (so the readers are exercised)
+//   groundtruth.gml                LoD2 ground truth, CityGML 2.0, block CRS
+//   groundtruth_edges.json         3D roof edges and ground markings with kinds
+//   simulation.json                what was simulated (preset, seed, options)
+// The folder is written under a temporary name and renamed when complete.
+SimulateSummary RunSimulate(const SimulateRequest& request, Progress& progress);
+
+}  // namespace roofsweep
