@@ -81,8 +81,7 @@ Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const 
   if (image.channels() == 1) method = GradientMethod::kGrey;
   const GradientField gradient = ComputeGradient(GradientPlanes(image, method), method, o.sigma);
   const HysteresisThresholds t = ChooseThresholds(gradient.magnitude, o);
-  EdgeMap map = SuppressNonMaxima(gradient, t.low);
-  ApplyHysteresis(map, t.high);
+  const EdgeMap map = DetectEdgePoints(gradient, t.low, t.high);
   const auto chains = LinkEdgePoints(map, o.link_max_angle);
   std::vector<LinePiece> pieces = ChainsToPieces(chains, map, o);
   const int raw_pieces = static_cast<int>(pieces.size());
@@ -91,7 +90,7 @@ Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const 
   Segments2D out;
   for (const LinePiece& piece : pieces) {
     if (piece.fit.Length() + 1.0 < o.min_length) continue;  // see PieceToSegment
-    Segment2D s = PieceToSegment(piece, map, method);
+    Segment2D s = PieceToSegment(piece, map, gradient);
     MeasureSideColours(s, image, o.side_offset, o.side_width);
     out.push_back(s);
   }

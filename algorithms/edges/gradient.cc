@@ -1,5 +1,6 @@
 #include "algorithms/edges/gradient.h"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -8,101 +9,117 @@
 namespace roofsweep {
 namespace {
 
-cv::Mat Smooth(const cv::Mat& plane, double sigma) {
-  if (sigma <= 0) return plane;
+void SmoothInPlace(cv::Mat& plane, double sigma) {
+  if (sigma <= 0) return;
   // ±3 sigma holds 99.7 % of the kernel; OpenCV's own choice (±4 sigma for
   // float) costs a third more for no visible change in the edges.
   const int radius = std::max(1, static_cast<int>(std::ceil(3.0 * sigma)));
-  cv::Mat out;
-  cv::GaussianBlur(plane, out, cv::Size(2 * radius + 1, 2 * radius + 1), sigma, sigma,
+  cv::GaussianBlur(plane, plane, cv::Size(2 * radius + 1, 2 * radius + 1), sigma, sigma,
                    cv::BORDER_REPLICATE);
-  return out;
 }
 
-struct RowPointers {
-  const float* up;
-  const float* mid;
-  const float* down;
-};
-
-void GreyRows(const cv::Mat& p, GradientField& g, int y0, int y1) {
-  const int w = p.cols;
-  for (int y = y0; y < y1; ++y) {
-    const float* up = p.ptr<float>(y - 1);
-    const float* mid = p.ptr<float>(y);
-    const float* down = p.ptr<float>(y + 1);
-    float* m = g.magnitude.ptr<float>(y);
-    float* gx = g.gx.ptr<float>(y);
-    float* gy = g.gy.ptr<float>(y);
-    for (int x = 1; x < w - 1; ++x) {
-      const float dx = 0.5f * (mid[x + 1] - mid[x - 1]);
-      const float dy = 0.5f * (down[x] - up[x]);
-      gx[x] = dx;
-      gy[x] = dy;
-      m[x] = std::sqrt(dx * dx + dy * dy);
-    }
+// Per-row kernels on raw, non-aliasing pointers: that (and -fno-math-errno
+// for sqrt, see CMakeLists.txt) lets GCC vectorise them. They are
+// branch-free (selects, not ifs) for the same reason.
+void GreyRow(const float* __restrict up, const float* __restrict mid,
+             const float* __restrict down, float* __restrict m, float* __restrict gx,
+             float* __restrict gy, int w) {
+  for (int x = 1; x < w - 1; ++x) {
+    const float dx = 0.5f * (mid[x + 1] - mid[x - 1]);
+    const float dy = 0.5f * (down[x] - up[x]);
+    gx[x] = dx;
+    gy[x] = dy;
+    m[x] = std::sqrt(dx * dx + dy * dy);
   }
 }
 
-void ColourRows(const std::vector<cv::Mat>& planes, GradientMethod method, GradientField& g, int y0,
-                int y1) {
-  const int w = planes[0].cols;
-  const bool dizenzo = method == GradientMethod::kDiZenzo;
-  for (int y = y0; y < y1; ++y) {
-    RowPointers r[3];
-    for (int b = 0; b < 3; ++b) {
-      r[b] = {planes[b].ptr<float>(y - 1), planes[b].ptr<float>(y), planes[b].ptr<float>(y + 1)};
-    }
-    float* m = g.magnitude.ptr<float>(y);
-    float* gxo = g.gx.ptr<float>(y);
-    float* gyo = g.gy.ptr<float>(y);
-    uchar* bo = dizenzo ? nullptr : g.band.ptr<uchar>(y);
-    // Branch-free selects so that the compiler vectorises the loop.
-    for (int x = 1; x < w - 1; ++x) {
-      const float dx0 = 0.5f * (r[0].mid[x + 1] - r[0].mid[x - 1]);
-      const float dy0 = 0.5f * (r[0].down[x] - r[0].up[x]);
-      const float dx1 = 0.5f * (r[1].mid[x + 1] - r[1].mid[x - 1]);
-      const float dy1 = 0.5f * (r[1].down[x] - r[1].up[x]);
-      const float dx2 = 0.5f * (r[2].mid[x + 1] - r[2].mid[x - 1]);
-      const float dy2 = 0.5f * (r[2].down[x] - r[2].up[x]);
-      const float n0 = dx0 * dx0 + dy0 * dy0;
-      const float n1 = dx1 * dx1 + dy1 * dy1;
-      const float n2 = dx2 * dx2 + dy2 * dy2;
-      const bool one = n1 > n0;
-      float best = one ? n1 : n0;
-      float bx = one ? dx1 : dx0;
-      float by = one ? dy1 : dy0;
-      int bb = one ? 1 : 0;
-      const bool two = n2 > best;
-      best = two ? n2 : best;
-      bx = two ? dx2 : bx;
-      by = two ? dy2 : by;
-      bb = two ? 2 : bb;
-      if (!dizenzo) {
-        m[x] = std::sqrt(best);
-        gxo[x] = bx;
-        gyo[x] = by;
-        bo[x] = static_cast<uchar>(bb);
-        continue;
-      }
-      // D = JᵀJ = [a b; b c]; largest eigenvalue and its eigenvector.
-      const float a = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
-      const float bxy = dx0 * dy0 + dx1 * dy1 + dx2 * dy2;
-      const float c = dy0 * dy0 + dy1 * dy1 + dy2 * dy2;
-      const float half = 0.5f * (a - c);
-      const float lambda = 0.5f * (a + c) + std::sqrt(half * half + bxy * bxy);
-      // (lambda - c, b) and (b, lambda - a) are both eigenvectors; take the
-      // longer one, the other vanishes when D is nearly diagonal.
-      float ex = a >= c ? lambda - c : bxy;
-      float ey = a >= c ? bxy : lambda - a;
-      const float en = std::sqrt(ex * ex + ey * ey);
-      const float mag = std::sqrt(lambda);
-      const float scale = en > 0 ? mag / en : 0.f;
-      const float sign = ex * bx + ey * by < 0 ? -scale : scale;
-      m[x] = mag;
-      gxo[x] = ex * sign;
-      gyo[x] = ey * sign;
-    }
+// Rows y-1, y, y+1 of the three bands.
+struct BandRows {
+  const float* u[3];
+  const float* c[3];
+  const float* d[3];
+};
+
+BandRows RowsAt(const std::vector<cv::Mat>& planes, int y) {
+  BandRows r;
+  for (int b = 0; b < 3; ++b) {
+    r.u[b] = planes[b].ptr<float>(y - 1);
+    r.c[b] = planes[b].ptr<float>(y);
+    r.d[b] = planes[b].ptr<float>(y + 1);
+  }
+  return r;
+}
+
+void MaxRow(const float* __restrict u0, const float* __restrict c0, const float* __restrict d0,
+            const float* __restrict u1, const float* __restrict c1, const float* __restrict d1,
+            const float* __restrict u2, const float* __restrict c2, const float* __restrict d2,
+            float* __restrict m, float* __restrict gxo, float* __restrict gyo, int w) {
+  for (int x = 1; x < w - 1; ++x) {
+    const float dx0 = 0.5f * (c0[x + 1] - c0[x - 1]);
+    const float dy0 = 0.5f * (d0[x] - u0[x]);
+    const float dx1 = 0.5f * (c1[x + 1] - c1[x - 1]);
+    const float dy1 = 0.5f * (d1[x] - u1[x]);
+    const float dx2 = 0.5f * (c2[x + 1] - c2[x - 1]);
+    const float dy2 = 0.5f * (d2[x] - u2[x]);
+    const float n0 = dx0 * dx0 + dy0 * dy0;
+    const float n1 = dx1 * dx1 + dy1 * dy1;
+    const float n2 = dx2 * dx2 + dy2 * dy2;
+    const bool one = n1 > n0;
+    float best = one ? n1 : n0;
+    float bx = one ? dx1 : dx0;
+    float by = one ? dy1 : dy0;
+    const bool two = n2 > best;
+    best = two ? n2 : best;
+    bx = two ? dx2 : bx;
+    by = two ? dy2 : by;
+    m[x] = std::sqrt(best);
+    gxo[x] = bx;
+    gyo[x] = by;
+  }
+}
+
+void DiZenzoRow(const float* __restrict u0, const float* __restrict c0,
+                const float* __restrict d0, const float* __restrict u1,
+                const float* __restrict c1, const float* __restrict d1,
+                const float* __restrict u2, const float* __restrict c2,
+                const float* __restrict d2, float* __restrict m, float* __restrict gxo,
+                float* __restrict gyo, int w) {
+  for (int x = 1; x < w - 1; ++x) {
+    const float dx0 = 0.5f * (c0[x + 1] - c0[x - 1]);
+    const float dy0 = 0.5f * (d0[x] - u0[x]);
+    const float dx1 = 0.5f * (c1[x + 1] - c1[x - 1]);
+    const float dy1 = 0.5f * (d1[x] - u1[x]);
+    const float dx2 = 0.5f * (c2[x + 1] - c2[x - 1]);
+    const float dy2 = 0.5f * (d2[x] - u2[x]);
+    // Strongest band, for the sign of the eigenvector.
+    const float n0 = dx0 * dx0 + dy0 * dy0;
+    const float n1 = dx1 * dx1 + dy1 * dy1;
+    const float n2 = dx2 * dx2 + dy2 * dy2;
+    const bool one = n1 > n0;
+    float bx = one ? dx1 : dx0;
+    float by = one ? dy1 : dy0;
+    const bool two = n2 > (one ? n1 : n0);
+    bx = two ? dx2 : bx;
+    by = two ? dy2 : by;
+    // D = JᵀJ = [a b; b c]; largest eigenvalue and its eigenvector.
+    const float a = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
+    const float bxy = dx0 * dy0 + dx1 * dy1 + dx2 * dy2;
+    const float c = dy0 * dy0 + dy1 * dy1 + dy2 * dy2;
+    const float half = 0.5f * (a - c);
+    const float lambda = 0.5f * (a + c) + std::sqrt(half * half + bxy * bxy);
+    // (lambda - c, b) and (b, lambda - a) are both eigenvectors; take the
+    // longer one, the other vanishes when D is nearly diagonal.
+    const bool wide = a >= c;
+    const float ex = wide ? lambda - c : bxy;
+    const float ey = wide ? bxy : lambda - a;
+    const float en2 = ex * ex + ey * ey;
+    const float mag = std::sqrt(lambda);
+    // ex = ey = 0 when D = 0, so any positive floor gives the 0 vector there.
+    const float scale = mag / std::sqrt(std::max(en2, 1e-30f));
+    const float sign = ex * bx + ey * by < 0 ? -scale : scale;
+    m[x] = mag;
+    gxo[x] = ex * sign;
+    gyo[x] = ey * sign;
   }
 }
 
@@ -111,7 +128,7 @@ void ColourRows(const std::vector<cv::Mat>& planes, GradientMethod method, Gradi
 std::vector<cv::Mat> GradientPlanes(const cv::Mat& image, GradientMethod method) {
   std::vector<cv::Mat> planes;
   if (image.channels() == 1) {
-    planes.push_back(image);
+    planes.push_back(image.clone());
   } else if (method == GradientMethod::kGrey) {
     cv::Mat grey;
     cv::cvtColor(image, grey, cv::COLOR_RGB2GRAY);
@@ -122,31 +139,74 @@ std::vector<cv::Mat> GradientPlanes(const cv::Mat& image, GradientMethod method)
   return planes;
 }
 
-GradientField ComputeGradient(const std::vector<cv::Mat>& planes, GradientMethod method,
-                              double sigma) {
+EdgeBand CarryingBand(const GradientField& g, int x, int y) {
+  if (g.smoothed.size() == 1) return EdgeBand::kGrey;
+  if (g.method == GradientMethod::kDiZenzo) return EdgeBand::kFused;
+  float best = -1;
+  int band = 0;
+  for (int b = 0; b < 3; ++b) {
+    const cv::Mat& p = g.smoothed[b];
+    const float dx = 0.5f * (p.ptr<float>(y)[x + 1] - p.ptr<float>(y)[x - 1]);
+    const float dy = 0.5f * (p.ptr<float>(y + 1)[x] - p.ptr<float>(y - 1)[x]);
+    const float n = dx * dx + dy * dy;
+    if (n > best) {
+      best = n;
+      band = b;
+    }
+  }
+  return static_cast<EdgeBand>(band);
+}
+
+void GradientRow(const GradientField& g, int y, float* m, float* gx, float* gy) {
+  const std::vector<cv::Mat>& planes = g.smoothed;
+  const int w = planes[0].cols;
+  // Scratch for the magnitude when the caller does not want it.
+  thread_local std::vector<float> scratch;
+  if (m == nullptr) {
+    if (scratch.size() < static_cast<size_t>(w)) scratch.resize(w);
+    m = scratch.data();
+  }
+  if (planes.size() == 1) {
+    const cv::Mat& p = planes[0];
+    GreyRow(p.ptr<float>(y - 1), p.ptr<float>(y), p.ptr<float>(y + 1), m, gx, gy, w);
+    return;
+  }
+  const BandRows r = RowsAt(planes, y);
+  if (g.method == GradientMethod::kDiZenzo) {
+    DiZenzoRow(r.u[0], r.c[0], r.d[0], r.u[1], r.c[1], r.d[1], r.u[2], r.c[2], r.d[2], m, gx, gy,
+               w);
+  } else {
+    MaxRow(r.u[0], r.c[0], r.d[0], r.u[1], r.c[1], r.d[1], r.u[2], r.c[2], r.d[2], m, gx, gy, w);
+  }
+}
+
+GradientField ComputeGradient(std::vector<cv::Mat> planes, GradientMethod method, double sigma) {
   if (planes.empty() || (planes.size() != 1 && planes.size() != 3) ||
       planes[0].type() != CV_32FC1 || (planes.size() == 3 && method == GradientMethod::kGrey)) {
     throw Error("ComputeGradient: expected 1 or 3 CV_32F planes (1 for the grey method)");
   }
   const int w = planes[0].cols;
   const int h = planes[0].rows;
-  std::vector<cv::Mat> smooth;
-  smooth.reserve(planes.size());
-  for (const cv::Mat& p : planes) smooth.push_back(Smooth(p, sigma));
+  for (cv::Mat& p : planes) SmoothInPlace(p, sigma);
 
   GradientField g;
-  g.magnitude = cv::Mat::zeros(h, w, CV_32F);
-  g.gx = cv::Mat::zeros(h, w, CV_32F);
-  g.gy = cv::Mat::zeros(h, w, CV_32F);
-  const bool colour = smooth.size() == 3;
-  if (colour && method == GradientMethod::kMax) g.band = cv::Mat::zeros(h, w, CV_8U);
-  if (w < 3 || h < 3) return g;
-
+  g.method = planes.size() == 1 ? GradientMethod::kGrey : method;
+  g.smoothed = std::move(planes);
+  // Not zero-initialised: the rows below write every interior pixel, and
+  // only the border needs zeros.
+  g.magnitude.create(h, w, CV_32F);
+  g.magnitude.row(0).setTo(0);
+  g.magnitude.row(h - 1).setTo(0);
+  g.magnitude.col(0).setTo(0);
+  g.magnitude.col(w - 1).setTo(0);
+  if (w < 3 || h < 3) {
+    g.magnitude.setTo(0);
+    return g;
+  }
   cv::parallel_for_(cv::Range(1, h - 1), [&](const cv::Range& rows) {
-    if (colour) {
-      ColourRows(smooth, method, g, rows.start, rows.end);
-    } else {
-      GreyRows(smooth[0], g, rows.start, rows.end);
+    std::vector<float> gx(w), gy(w);
+    for (int y = rows.start; y < rows.end; ++y) {
+      GradientRow(g, y, g.magnitude.ptr<float>(y), gx.data(), gy.data());
     }
   });
   return g;

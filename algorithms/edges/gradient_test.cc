@@ -12,6 +12,28 @@
 namespace roofsweep {
 namespace {
 
+// The gradient vectors of the whole field, for checking.
+void Vectors(const GradientField& g, cv::Mat& gx, cv::Mat& gy) {
+  gx = cv::Mat::zeros(g.magnitude.size(), CV_32F);
+  gy = cv::Mat::zeros(g.magnitude.size(), CV_32F);
+  for (int y = 1; y < g.magnitude.rows - 1; ++y) {
+    GradientRow(g, y, nullptr, gx.ptr<float>(y), gy.ptr<float>(y));
+  }
+}
+
+// A field whose gradient direction is along x (ramp along x) or y, with a
+// given magnitude image, for the non-maximum suppression tests.
+GradientField FieldWithMagnitude(const cv::Mat& magnitude, bool along_x) {
+  GradientField g;
+  g.method = GradientMethod::kGrey;
+  g.magnitude = magnitude;
+  cv::Mat ramp(magnitude.size(), CV_32F);
+  for (int y = 0; y < ramp.rows; ++y)
+    for (int x = 0; x < ramp.cols; ++x) ramp.at<float>(y, x) = static_cast<float>(along_x ? x : y);
+  g.smoothed = {ramp};
+  return g;
+}
+
 cv::Mat RandomColour(int w, int h, std::uint64_t seed) {
   cv::Mat image(h, w, CV_32FC3);
   cv::RNG rng(seed);
@@ -23,6 +45,8 @@ TEST(Gradient, MaxPicksTheStrongestBand) {
   const cv::Mat image = RandomColour(20, 16, 1);
   const GradientField g =
       ComputeGradient(GradientPlanes(image, GradientMethod::kMax), GradientMethod::kMax, 0.0);
+  cv::Mat gx, gy;
+  Vectors(g, gx, gy);
   for (int y = 1; y < 15; ++y) {
     for (int x = 1; x < 19; ++x) {
       double best = -1;
@@ -41,9 +65,9 @@ TEST(Gradient, MaxPicksTheStrongestBand) {
         }
       }
       EXPECT_NEAR(g.magnitude.at<float>(y, x), best, 1e-5);
-      EXPECT_EQ(g.band.at<uchar>(y, x), band);
-      EXPECT_NEAR(g.gx.at<float>(y, x), bx, 1e-5);
-      EXPECT_NEAR(g.gy.at<float>(y, x), by, 1e-5);
+      EXPECT_EQ(CarryingBand(g, x, y), static_cast<EdgeBand>(band));
+      EXPECT_NEAR(gx.at<float>(y, x), bx, 1e-5);
+      EXPECT_NEAR(gy.at<float>(y, x), by, 1e-5);
     }
   }
   EXPECT_EQ(g.magnitude.at<float>(0, 5), 0.f);  // border
@@ -53,7 +77,9 @@ TEST(Gradient, DiZenzoClosedFormMatchesEigenDecomposition) {
   const cv::Mat image = RandomColour(18, 14, 2);
   const GradientField g = ComputeGradient(GradientPlanes(image, GradientMethod::kDiZenzo),
                                           GradientMethod::kDiZenzo, 0.0);
-  EXPECT_TRUE(g.band.empty());
+  EXPECT_EQ(CarryingBand(g, 5, 5), EdgeBand::kFused);
+  cv::Mat gx, gy;
+  Vectors(g, gx, gy);
   for (int y = 1; y < 13; ++y) {
     for (int x = 1; x < 17; ++x) {
       Eigen::Matrix<double, 3, 2> j;
@@ -65,7 +91,7 @@ TEST(Gradient, DiZenzoClosedFormMatchesEigenDecomposition) {
       const double lambda = es.eigenvalues()(1);
       const Eigen::Vector2d ev = es.eigenvectors().col(1);
       EXPECT_NEAR(g.magnitude.at<float>(y, x), std::sqrt(lambda), 1e-5);
-      const Eigen::Vector2d got(g.gx.at<float>(y, x), g.gy.at<float>(y, x));
+      const Eigen::Vector2d got(gx.at<float>(y, x), gy.at<float>(y, x));
       EXPECT_NEAR(got.norm(), std::sqrt(lambda), 1e-5);
       EXPECT_NEAR(std::fabs(got.normalized().dot(ev)), 1.0, 1e-3);
     }
@@ -80,7 +106,9 @@ TEST(Gradient, DiZenzoSignFollowsTheStrongestBand) {
       image.at<cv::Vec3f>(y, x) = cv::Vec3f(0.2f * x, 0.5f, 0.5f - 0.05f * x);
   const GradientField g = ComputeGradient(GradientPlanes(image, GradientMethod::kDiZenzo),
                                           GradientMethod::kDiZenzo, 0.0);
-  EXPECT_GT(g.gx.at<float>(2, 2), 0.f);
+  cv::Mat gx, gy;
+  Vectors(g, gx, gy);
+  EXPECT_GT(gx.at<float>(2, 2), 0.f);
   EXPECT_NEAR(g.magnitude.at<float>(2, 2), std::hypot(0.2, 0.05), 1e-5);
 }
 
@@ -131,16 +159,14 @@ TEST(Thresholds, AutomaticRuleFollowsTheNoise) {
 }
 
 TEST(EdgePoints, HysteresisKeepsWeakPointsConnectedToStrongOnes) {
-  GradientField g;
-  g.magnitude = cv::Mat::zeros(7, 12, CV_32F);
-  g.gx = cv::Mat::zeros(7, 12, CV_32F);
-  g.gy = cv::Mat::ones(7, 12, CV_32F);  // vertical gradient: horizontal edge on row 3
-  for (int x = 1; x < 11; ++x) g.magnitude.at<float>(3, x) = x == 2 ? 1.0f : 0.3f;
-  // A separate weak run on row 5 separated by a zero row... (row 4 zero).
-  for (int x = 1; x < 5; ++x) g.magnitude.at<float>(5, x) = 0.3f;
-  EdgeMap map = SuppressNonMaxima(g, 0.2f);
-  EXPECT_EQ(map.points.size(), 14u);
-  ApplyHysteresis(map, 0.9f);
+  // Vertical gradient: a horizontal edge on row 3, strong at x = 2 only,
+  // and a weak run on row 5, not connected to it (row 4 is zero).
+  cv::Mat magnitude = cv::Mat::zeros(7, 12, CV_32F);
+  for (int x = 1; x < 11; ++x) magnitude.at<float>(3, x) = x == 2 ? 1.0f : 0.3f;
+  for (int x = 1; x < 5; ++x) magnitude.at<float>(5, x) = 0.3f;
+  const GradientField g = FieldWithMagnitude(magnitude, false);
+  EXPECT_EQ(DetectEdgePoints(g, 0.2f, 0.2f).points.size(), 14u);
+  const EdgeMap map = DetectEdgePoints(g, 0.2f, 0.9f);
   EXPECT_EQ(map.points.size(), 10u);
   for (const auto& p : map.points) {
     EXPECT_EQ(p.py, 3);
@@ -151,10 +177,7 @@ TEST(EdgePoints, HysteresisKeepsWeakPointsConnectedToStrongOnes) {
 }
 
 TEST(EdgePoints, ParabolicSubPixelOffset) {
-  GradientField g;
-  g.magnitude = cv::Mat::zeros(5, 7, CV_32F);
-  g.gx = cv::Mat::ones(5, 7, CV_32F);
-  g.gy = cv::Mat::zeros(5, 7, CV_32F);
+  GradientField g = FieldWithMagnitude(cv::Mat::zeros(5, 7, CV_32F), true);
   // Samples of the parabola 1 - (x - 3.3)^2 / 10 at x = 2, 3, 4.
   auto f = [](double x) { return static_cast<float>(1 - (x - 3.3) * (x - 3.3) / 10); };
   for (int y = 1; y < 4; ++y) {
@@ -162,7 +185,7 @@ TEST(EdgePoints, ParabolicSubPixelOffset) {
     g.magnitude.at<float>(y, 3) = f(3);
     g.magnitude.at<float>(y, 4) = f(4);
   }
-  const EdgeMap map = SuppressNonMaxima(g, 0.1f);
+  const EdgeMap map = DetectEdgePoints(g, 0.1f, 0.1f);
   ASSERT_EQ(map.points.size(), 3u);
   EXPECT_NEAR(map.points[0].x, 3.3 + 0.5, 1e-5);  // pixel 3's centre is at 3.5
 }

@@ -13,8 +13,11 @@ double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-double AngleBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return std::atan2(std::fabs(Cross(a, b)), a.dot(b));
+// Cosine of the angle between two vectors (1 for zero ones): a turn
+// measure that, unlike atan2, costs no transcendental call per point.
+double CosBetween(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const double n = std::sqrt(a.squaredNorm() * b.squaredNorm());
+  return n > 0 ? a.dot(b) / n : 1.0;
 }
 
 // Index in [first, last) of the point farthest from the chord between the
@@ -147,12 +150,12 @@ std::vector<std::pair<int, int>> SplitIntoStraightPieces(const Points2& p, const
   // 1. Tangent discontinuities.
   std::vector<std::pair<int, int>> ranges;
   const int k = std::max(1, o.tangent_window);
-  const double max_turn = o.split_tangent_angle * kPi / 180.0;
+  const double min_cos = std::cos(o.split_tangent_angle * kPi / 180.0);
   int start = 0;
   int i = k;
   while (i < n - k) {
-    const double turn = AngleBetween(p[i] - p[i - k], p[i + k] - p[i]);
-    if (turn <= max_turn) {
+    const double turn = CosBetween(p[i] - p[i - k], p[i + k] - p[i]);
+    if (turn >= min_cos) {
       ++i;
       continue;
     }
@@ -161,9 +164,9 @@ std::vector<std::pair<int, int>> SplitIntoStraightPieces(const Points2& p, const
     double sharpest_turn = turn;
     int j = i + 1;
     for (; j < n - k; ++j) {
-      const double tj = AngleBetween(p[j] - p[j - k], p[j + k] - p[j]);
-      if (tj <= max_turn) break;
-      if (tj > sharpest_turn) {
+      const double tj = CosBetween(p[j] - p[j - k], p[j + k] - p[j]);
+      if (tj >= min_cos) break;
+      if (tj < sharpest_turn) {
         sharpest_turn = tj;
         sharpest = j;
       }

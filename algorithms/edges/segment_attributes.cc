@@ -32,7 +32,7 @@ bool Sample(const cv::Mat& image, double x, double y, Eigen::Vector3f& out) {
 
 }  // namespace
 
-Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, GradientMethod method) {
+Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, const GradientField& gradient) {
   Segment2D s;
   // Each edge point stands for the edge's crossing of one pixel, so the
   // edge reaches half a pixel beyond the extreme points.
@@ -40,19 +40,20 @@ Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, GradientMet
   s.p1 = piece.fit.End() + 0.5 * piece.fit.direction;
   s.rms_residual = static_cast<float>(piece.fit.rms);
   s.support = static_cast<int>(piece.points.size());
-  s.method = method;
+  s.method = gradient.method;
   double sum = 0;
-  double per_band[5] = {0, 0, 0, 0, 0};
+  double per_band[3] = {0, 0, 0};
   for (int id : piece.points) {
     const EdgePoint& p = map.points[id];
     sum += p.magnitude;
-    per_band[std::min<int>(p.band, 4)] += p.magnitude;
+    if (gradient.method == GradientMethod::kMax) {
+      per_band[static_cast<int>(CarryingBand(gradient, p.px, p.py))] += p.magnitude;
+    }
   }
   s.contrast = piece.points.empty() ? 0.f : static_cast<float>(sum / piece.points.size());
-  switch (method) {
+  switch (gradient.method) {
     case GradientMethod::kMax:
       s.band = static_cast<EdgeBand>(std::max_element(per_band, per_band + 3) - per_band);
-      if (per_band[3] > 0) s.band = EdgeBand::kFused;  // grey input: a single plane
       break;
     case GradientMethod::kDiZenzo:
       s.band = EdgeBand::kFused;

@@ -2,6 +2,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "algorithms/edges/gradient.h"
 #include "algorithms/edges/line_pieces.h"
 #include "algorithms/edges/segment2d.h"
 
@@ -11,8 +12,9 @@ namespace roofsweep {
 // out by half a pixel: each point stands for one pixel's piece of edge),
 // contrast (mean fused magnitude of its points), RMS residual, support, and
 // the carrying band: for kMax the band with the largest summed magnitude
-// over the points, kFused for Di Zenzo, kGrey for grey.
-Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, GradientMethod method);
+// over the points, kFused for Di Zenzo, kGrey for grey (gradient.method).
+Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map,
+                         const GradientField& gradient);
 
 // Mean colour of the strips [offset, offset + width] px on either side of
 // the segment, sampled bilinearly every pixel along it and every pixel
