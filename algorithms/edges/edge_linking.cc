@@ -18,7 +18,8 @@ Unit UnitGradient(const EdgePoint& p) {
 
 }  // namespace
 
-std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angle_deg) {
+std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angle_deg,
+                                             int min_points) {
   const auto& pts = map.points;
   const int n = static_cast<int>(pts.size());
   const float min_cos = static_cast<float>(std::cos(max_angle_deg * kPi / 180.0));
@@ -68,8 +69,9 @@ std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angl
 
   std::vector<std::vector<int>> chains;
   std::vector<char> visited(n, 0);
+  std::vector<int> chain;
   auto walk = [&](int start) {
-    std::vector<int> chain;
+    chain.clear();
     int prev = -1;
     int cur = start;
     while (cur >= 0 && !visited[cur]) {
@@ -81,7 +83,7 @@ std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angl
       prev = cur;
       cur = next;
     }
-    chains.push_back(std::move(chain));
+    if (static_cast<int>(chain.size()) >= min_points) chains.push_back(chain);
   };
   // Open chains first, from an end; what is left are closed loops.
   for (int i = 0; i < n; ++i) {

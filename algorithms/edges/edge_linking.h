@@ -14,7 +14,10 @@ namespace roofsweep {
 // along the tangent than across it, the nearest one. A link is kept only
 // when it is mutual, which breaks chains at junctions instead of letting
 // them zig-zag between branches. Closed contours come out as one chain
-// starting at their lowest index. Deterministic.
-std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angle_deg);
+// starting at their lowest index. Chains of fewer than `min_points` points
+// are not returned (most chains are a few texture points; not storing them
+// saves their allocations). Deterministic.
+std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angle_deg,
+                                             int min_points = 1);
 
 }  // namespace roofsweep

@@ -23,11 +23,14 @@ struct EdgeOptions {
   //            the median up, so the estimate errs on the safe side)
   //   high   = max(auto_high_factor * noise, auto_min_high)
   //   low    = auto_low_ratio * high
+  // (On the merton1 test images low ratios from 0.4 to 0.6 find the same
+  // share of the reference lines; 0.6 keeps fewer texture points, which
+  // saves a fifth of the time.)
   // The median is taken over every second pixel in each direction.
   double high_threshold = -1;
   double low_threshold = -1;
   double auto_high_factor = 2.0;
-  double auto_low_ratio = 0.4;
+  double auto_low_ratio = 0.6;
   // Floor for the automatic high threshold, for images whose median
   // gradient is ~0 (noise-free synthetic ones, large saturated areas):
   // 0.003 is the peak of a 2/255 step blurred with sigma 1, so 8-bit
@@ -71,10 +74,10 @@ struct EdgeOptions {
   // Segments shorter than this are dropped (Scholze et al. use 15 px).
   double min_length = 15.0;
 
-  // Side colours are averaged over a strip from side_offset to
-  // side_offset + side_width pixels on each side.
-  double side_offset = 1.5;
-  double side_width = 2.0;
+  // Side colours are averaged along the lines parallel to the segment at
+  // this distance on either side: beyond the blur of the edge itself (the
+  // smoothing plus a pixel), close enough to stay on the face it bounds.
+  double side_distance = 2.5;
 
   // Optional fusion (§2.3): segments from these methods that are not
   // already present in the result of `method` are added. Empty: off.

@@ -13,8 +13,7 @@ namespace {
 // (conditional loads would keep the loop scalar), so GCC vectorises it.
 void CandidateRow(const float* __restrict up, const float* __restrict mid,
                   const float* __restrict down, const float* __restrict gx,
-                  const float* __restrict gy, float low, float high, int* __restrict state,
-                  int w) {
+                  const float* __restrict gy, float low, float high, int* __restrict state, int w) {
   for (int x = 1; x < w - 1; ++x) {
     const float c = mid[x], left = mid[x - 1], right = mid[x + 1], top = up[x], bottom = down[x];
     const bool horizontal = std::fabs(gx[x]) >= std::fabs(gy[x]);

@@ -46,8 +46,7 @@ void ValidateOptions(const EdgeOptions& o) {
   Require(finite(o.merge_max_angle) && o.merge_max_angle >= 0, "merge_max_angle must be >= 0");
   Require(finite(o.merge_max_offset) && o.merge_max_offset >= 0, "merge_max_offset must be >= 0");
   Require(finite(o.min_length) && o.min_length >= 0, "min_length must be >= 0");
-  Require(finite(o.side_offset) && o.side_offset >= 0 && finite(o.side_width) && o.side_width >= 0,
-          "side_offset and side_width must be >= 0");
+  Require(finite(o.side_distance) && o.side_distance >= 0, "side_distance must be >= 0");
   Require(finite(o.fuse_max_distance) && finite(o.fuse_max_angle) && finite(o.fuse_min_overlap) &&
               o.fuse_min_overlap >= 0 && o.fuse_min_overlap <= 1,
           "fuse_* must be finite, fuse_min_overlap in [0, 1]");
@@ -82,7 +81,7 @@ Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const 
   const GradientField gradient = ComputeGradient(GradientPlanes(image, method), method, o.sigma);
   const HysteresisThresholds t = ChooseThresholds(gradient.magnitude, o);
   const EdgeMap map = DetectEdgePoints(gradient, t.low, t.high);
-  const auto chains = LinkEdgePoints(map, o.link_max_angle);
+  const auto chains = LinkEdgePoints(map, o.link_max_angle, o.min_support);
   std::vector<LinePiece> pieces = ChainsToPieces(chains, map, o);
   const int raw_pieces = static_cast<int>(pieces.size());
   if (o.merge) pieces = MergeCollinearPieces(std::move(pieces), map, o);
@@ -91,7 +90,7 @@ Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const 
   for (const LinePiece& piece : pieces) {
     if (piece.fit.Length() + 1.0 < o.min_length) continue;  // see PieceToSegment
     Segment2D s = PieceToSegment(piece, map, gradient);
-    MeasureSideColours(s, image, o.side_offset, o.side_width);
+    MeasureSideColours(s, image, o.side_distance);
     out.push_back(s);
   }
   if (stats) {

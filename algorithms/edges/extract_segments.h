@@ -12,8 +12,8 @@ struct EdgeStats {
   float noise = 0;          // automatic noise estimate (EdgeOptions)
   float low = 0, high = 0;  // thresholds used
   int edge_points = 0;      // after hysteresis
-  int chains = 0;
-  int pieces = 0;  // straight pieces before merging
+  int chains = 0;           // with at least min_support points
+  int pieces = 0;           // straight pieces before merging
 };
 
 // Straight edge segments of an image (Scholze et al. 2000, §2): Gaussian

@@ -21,9 +21,8 @@ void SmoothInPlace(cv::Mat& plane, double sigma) {
 // Per-row kernels on raw, non-aliasing pointers: that (and -fno-math-errno
 // for sqrt, see CMakeLists.txt) lets GCC vectorise them. They are
 // branch-free (selects, not ifs) for the same reason.
-void GreyRow(const float* __restrict up, const float* __restrict mid,
-             const float* __restrict down, float* __restrict m, float* __restrict gx,
-             float* __restrict gy, int w) {
+void GreyRow(const float* __restrict up, const float* __restrict mid, const float* __restrict down,
+             float* __restrict m, float* __restrict gx, float* __restrict gy, int w) {
   for (int x = 1; x < w - 1; ++x) {
     const float dx = 0.5f * (mid[x + 1] - mid[x - 1]);
     const float dy = 0.5f * (down[x] - up[x]);
@@ -78,12 +77,10 @@ void MaxRow(const float* __restrict u0, const float* __restrict c0, const float*
   }
 }
 
-void DiZenzoRow(const float* __restrict u0, const float* __restrict c0,
-                const float* __restrict d0, const float* __restrict u1,
-                const float* __restrict c1, const float* __restrict d1,
-                const float* __restrict u2, const float* __restrict c2,
-                const float* __restrict d2, float* __restrict m, float* __restrict gxo,
-                float* __restrict gyo, int w) {
+void DiZenzoRow(const float* __restrict u0, const float* __restrict c0, const float* __restrict d0,
+                const float* __restrict u1, const float* __restrict c1, const float* __restrict d1,
+                const float* __restrict u2, const float* __restrict c2, const float* __restrict d2,
+                float* __restrict m, float* __restrict gxo, float* __restrict gyo, int w) {
   for (int x = 1; x < w - 1; ++x) {
     const float dx0 = 0.5f * (c0[x + 1] - c0[x - 1]);
     const float dy0 = 0.5f * (d0[x] - u0[x]);

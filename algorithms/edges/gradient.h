@@ -12,8 +12,9 @@ namespace roofsweep {
 // (GradientRow) where needed: that costs less than writing and reading two
 // more float images.
 struct GradientField {
-  cv::Mat magnitude;  // CV_32F fused gradient norm, intensity per pixel; 0 on the outermost rows and columns
-  std::vector<cv::Mat> smoothed;  // the smoothed CV_32F planes (1 or 3)
+  cv::Mat magnitude;  // CV_32F fused gradient norm, intensity per pixel; 0 on the outermost rows
+                      // and columns
+  std::vector<cv::Mat> smoothed;                 // the smoothed CV_32F planes (1 or 3)
   GradientMethod method = GradientMethod::kMax;  // kGrey for one plane
 };
 

@@ -40,10 +40,6 @@ int FarthestFromChord(const Points2& p, int first, int last) {
   return best;
 }
 
-Points2 Slice(const Points2& p, int first, int last) {
-  return Points2(p.begin() + first, p.begin() + last);
-}
-
 // Drops up to end_trim_points points from each end of [first, last) while
 // they lie more than end_trim_distance from the line through the inner
 // points. Smoothing rounds corners and junctions, so the last few edge
@@ -52,7 +48,7 @@ Points2 Slice(const Points2& p, int first, int last) {
 std::pair<int, int> TrimEnds(const Points2& p, int first, int last, const EdgeOptions& o) {
   const int k = o.end_trim_points;
   if (k <= 0 || last - first - 2 * k < std::max(2, o.min_support)) return {first, last};
-  const LineFit inner = FitLine(Slice(p, first + k, last - k));
+  const LineFit inner = FitLine(p.data() + first + k, last - 2 * k - first);
   const Eigen::Vector2d n = inner.Normal();
   auto off = [&](int i) { return std::fabs((p[i] - inner.centroid).dot(n)); };
   // Trim from the outside in, so a far point beyond a near one still goes.
@@ -69,14 +65,15 @@ std::pair<int, int> TrimEnds(const Points2& p, int first, int last, const EdgeOp
 
 }  // namespace
 
-LineFit FitLine(const Points2& points) {
+LineFit FitLine(const Eigen::Vector2d* points, int count) {
   LineFit f;
-  const double n = static_cast<double>(points.size());
-  if (points.empty()) return f;
-  for (const auto& q : points) f.centroid += q;
+  const double n = static_cast<double>(count);
+  if (count <= 0) return f;
+  for (int i = 0; i < count; ++i) f.centroid += points[i];
   f.centroid /= n;
   double sxx = 0, sxy = 0, syy = 0;
-  for (const auto& q : points) {
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector2d& q = points[i];
     const Eigen::Vector2d e = q - f.centroid;
     sxx += e.x() * e.x();
     sxy += e.x() * e.y();
@@ -89,7 +86,8 @@ LineFit FitLine(const Points2& points) {
   double sum2 = 0;
   f.t_min = 1e300;
   f.t_max = -1e300;
-  for (const auto& q : points) {
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector2d& q = points[i];
     const Eigen::Vector2d e = q - f.centroid;
     const double r = e.dot(normal);
     const double t = e.dot(f.direction);
@@ -102,8 +100,9 @@ LineFit FitLine(const Points2& points) {
   return f;
 }
 
-bool IsCurved(const Points2& points, const LineFit& fit, double max_sagitta, double min_explained) {
-  const int n = static_cast<int>(points.size());
+bool IsCurved(const Eigen::Vector2d* points, int count, const LineFit& fit, double max_sagitta,
+              double min_explained) {
+  const int n = count;
   if (n < 6 || fit.Length() <= 0) return false;
   const double mid = 0.5 * (fit.t_min + fit.t_max);
   const double half = 0.5 * fit.Length();
@@ -141,10 +140,10 @@ bool IsCurved(const Points2& points, const LineFit& fit, double max_sagitta, dou
   return sagitta > 3 * se && explained >= min_explained;
 }
 
-std::vector<std::pair<int, int>> SplitIntoStraightPieces(const Points2& p, const EdgeOptions& o) {
+std::vector<StraightRun> SplitIntoStraightPieces(const Points2& p, const EdgeOptions& o) {
   const int n = static_cast<int>(p.size());
   const int min_support = std::max(2, o.min_support);
-  std::vector<std::pair<int, int>> out;
+  std::vector<StraightRun> out;
   if (n < min_support) return out;
 
   // 1. Tangent discontinuities.
@@ -184,11 +183,11 @@ std::vector<std::pair<int, int>> SplitIntoStraightPieces(const Points2& p, const
     stack.pop_back();
     if (range.second - range.first < min_support) continue;
     const auto [first, last] = TrimEnds(p, range.first, range.second, o);
-    const Points2 piece = Slice(p, first, last);
-    const LineFit fit = FitLine(piece);
+    const LineFit fit = FitLine(p.data() + first, last - first);
     if (fit.max_deviation <= o.fit_max_deviation &&
-        !IsCurved(piece, fit, o.fit_max_sagitta, o.fit_curve_min_explained)) {
-      out.emplace_back(first, last);
+        !IsCurved(p.data() + first, last - first, fit, o.fit_max_sagitta,
+                  o.fit_curve_min_explained)) {
+      out.push_back({first, last, fit});
       continue;
     }
     const int cut = FarthestFromChord(p, first, last);

@@ -25,13 +25,21 @@ struct LineFit {
 
 // Orthogonal regression through at least two points: the direction is the
 // principal eigenvector of the 2x2 scatter matrix, in closed form.
-LineFit FitLine(const Points2& points);
+LineFit FitLine(const Eigen::Vector2d* points, int count);
+inline LineFit FitLine(const Points2& points) {
+  return FitLine(points.data(), static_cast<int>(points.size()));
+}
 
 // True when the residuals of `points` about `fit` bend systematically: a
 // parabola r(u) = a + b u + c u² over the normalised position u in [-1, 1]
 // has sagitta |c| above `max_sagitta` and at least 3 standard errors, and
 // explains at least `min_explained` of the residuals' sum of squares.
-bool IsCurved(const Points2& points, const LineFit& fit, double max_sagitta, double min_explained);
+bool IsCurved(const Eigen::Vector2d* points, int count, const LineFit& fit, double max_sagitta,
+              double min_explained);
+inline bool IsCurved(const Points2& points, const LineFit& fit, double max_sagitta,
+                     double min_explained) {
+  return IsCurved(points.data(), static_cast<int>(points.size()), fit, max_sagitta, min_explained);
+}
 
 // Cuts a chain of ordered edge points into straight pieces, returned as
 // index ranges [first, last) into `chain`:
@@ -42,7 +50,10 @@ bool IsCurved(const Points2& points, const LineFit& fit, double max_sagitta, dou
 //     line leaves a point more than `fit_max_deviation` away or IsCurved.
 // The cut point itself belongs to neither piece. Pieces with fewer than
 // `min_support` points are dropped.
-std::vector<std::pair<int, int>> SplitIntoStraightPieces(const Points2& chain,
-                                                         const EdgeOptions& options);
+struct StraightRun {
+  int first = 0, last = 0;  // [first, last) in the chain
+  LineFit fit;
+};
+std::vector<StraightRun> SplitIntoStraightPieces(const Points2& chain, const EdgeOptions& options);
 
 }  // namespace roofsweep

@@ -68,8 +68,8 @@ TEST(LineFit, SplitsAtCornersAndKeepsLinesWhole) {
   p.insert(p.end(), leg.begin(), leg.end());
   const auto pieces = SplitIntoStraightPieces(p, EdgeOptions{});
   ASSERT_EQ(pieces.size(), 2u);
-  EXPECT_GE(pieces[0].second - pieces[0].first, 35);
-  EXPECT_GE(pieces[1].second - pieces[1].first, 35);
+  EXPECT_GE(pieces[0].last - pieces[0].first, 35);
+  EXPECT_GE(pieces[1].last - pieces[1].first, 35);
   // A gentle bend (10°) is not a tangent discontinuity, but the fit splits it.
   Points2 q = LinePoints({0, 0}, 0, 60, 0.0, 1);
   const Points2 bend = LinePoints({60, 0}, 10, 60, 0.0, 1);
@@ -81,8 +81,8 @@ TEST(LineFit, ArcsAreNotApproximatedPiecewise) {
   const EdgeOptions o;
   for (double radius : {30.0, 60.0, 100.0}) {
     const Points2 circle = ArcPoints({200, 200}, radius, 0, 360);
-    for (const auto& [first, last] : SplitIntoStraightPieces(circle, o)) {
-      const Points2 piece(circle.begin() + first, circle.begin() + last);
+    for (const StraightRun& run : SplitIntoStraightPieces(circle, o)) {
+      const Points2 piece(circle.begin() + run.first, circle.begin() + run.last);
       // Sagitta s = L²/(8R) <= ~fit_max_sagitta: L <= sqrt(8 R 0.3).
       EXPECT_LE(FitLine(piece).Length(), std::sqrt(8 * radius * 0.3 * 1.5)) << radius;
     }

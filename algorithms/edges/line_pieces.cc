@@ -30,8 +30,13 @@ Points2 PiecePositions(const std::vector<int>& ids, const EdgeMap& map) {
 }
 
 LinePiece MakePiece(std::vector<int> ids, const EdgeMap& map) {
+  const LineFit fit = FitLine(PiecePositions(ids, map));
+  return OrientPiece(std::move(ids), fit, map);
+}
+
+LinePiece OrientPiece(std::vector<int> ids, const LineFit& fit, const EdgeMap& map) {
   LinePiece piece;
-  piece.fit = FitLine(PiecePositions(ids, map));
+  piece.fit = fit;
   double polarity = 0;
   const Eigen::Vector2d n = piece.fit.Normal();
   for (int id : ids) polarity += map.points[id].gx * n.x() + map.points[id].gy * n.y();
@@ -51,9 +56,9 @@ std::vector<LinePiece> ChainsToPieces(const std::vector<std::vector<int>>& chain
   for (const auto& chain : chains) {
     if (static_cast<int>(chain.size()) < options.min_support) continue;
     const Points2 positions = PiecePositions(chain, map);
-    for (const auto& [first, last] : SplitIntoStraightPieces(positions, options)) {
-      pieces.push_back(
-          MakePiece(std::vector<int>(chain.begin() + first, chain.begin() + last), map));
+    for (const StraightRun& run : SplitIntoStraightPieces(positions, options)) {
+      pieces.push_back(OrientPiece(
+          std::vector<int>(chain.begin() + run.first, chain.begin() + run.last), run.fit, map));
     }
   }
   return pieces;

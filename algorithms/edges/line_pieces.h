@@ -19,6 +19,8 @@ Points2 PiecePositions(const std::vector<int>& ids, const EdgeMap& map);
 
 // Fits and orients a piece.
 LinePiece MakePiece(std::vector<int> ids, const EdgeMap& map);
+// Orients a piece whose line is already fitted.
+LinePiece OrientPiece(std::vector<int> ids, const LineFit& fit, const EdgeMap& map);
 
 // Chains -> straight pieces (SplitIntoStraightPieces on each chain).
 std::vector<LinePiece> ChainsToPieces(const std::vector<std::vector<int>>& chains,

@@ -31,8 +31,9 @@ struct Segment2D {
   int support = 0;         // number of edge points the line was fitted to
   EdgeBand band = EdgeBand::kFused;
   GradientMethod method = GradientMethod::kMax;  // detector that found it
-  // Mean colour (R, G, B in [0, 1]; grey images repeat the grey value) of a
-  // thin strip on each side, a few pixels from the line.
+  // Mean colour (R, G, B in [0, 1]; grey images repeat the grey value)
+  // along a line on each side, a few pixels (EdgeOptions::side_distance)
+  // from the segment.
   Eigen::Vector3f colour_left = Eigen::Vector3f::Zero();
   Eigen::Vector3f colour_right = Eigen::Vector3f::Zero();
 

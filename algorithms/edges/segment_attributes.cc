@@ -32,7 +32,8 @@ bool Sample(const cv::Mat& image, double x, double y, Eigen::Vector3f& out) {
 
 }  // namespace
 
-Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, const GradientField& gradient) {
+Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map,
+                         const GradientField& gradient) {
   Segment2D s;
   // Each edge point stands for the edge's crossing of one pixel, so the
   // edge reaches half a pixel beyond the extreme points.
@@ -65,30 +66,24 @@ Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, const Gradi
   return s;
 }
 
-void MeasureSideColours(Segment2D& s, const cv::Mat& image, double offset, double width) {
+void MeasureSideColours(Segment2D& s, const cv::Mat& image, double distance) {
   const double length = s.Length();
   if (length <= 0) return;
   const Eigen::Vector2d d = s.Direction();
-  const Eigen::Vector2d n = s.LeftNormal();
+  const Eigen::Vector2d n = s.LeftNormal() * distance;
   const int along = std::max(1, static_cast<int>(std::floor(length)));
-  const int across = std::max(1, static_cast<int>(std::round(width)) + 1);
   Eigen::Vector3f left = Eigen::Vector3f::Zero(), right = Eigen::Vector3f::Zero();
   int nl = 0, nr = 0;
   Eigen::Vector3f v;
   for (int i = 0; i < along; ++i) {
     const Eigen::Vector2d c = s.p0 + (i + 0.5) * (length / along) * d;
-    for (int j = 0; j < across; ++j) {
-      const double o = offset + (across == 1 ? 0.0 : width * j / (across - 1));
-      const Eigen::Vector2d pl = c + o * n;
-      const Eigen::Vector2d pr = c - o * n;
-      if (Sample(image, pl.x(), pl.y(), v)) {
-        left += v;
-        ++nl;
-      }
-      if (Sample(image, pr.x(), pr.y(), v)) {
-        right += v;
-        ++nr;
-      }
+    if (Sample(image, c.x() + n.x(), c.y() + n.y(), v)) {
+      left += v;
+      ++nl;
+    }
+    if (Sample(image, c.x() - n.x(), c.y() - n.y(), v)) {
+      right += v;
+      ++nr;
     }
   }
   s.colour_left = nl ? Eigen::Vector3f(left / static_cast<float>(nl)) : Eigen::Vector3f::Zero();

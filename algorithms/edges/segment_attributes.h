@@ -13,13 +13,12 @@ namespace roofsweep {
 // contrast (mean fused magnitude of its points), RMS residual, support, and
 // the carrying band: for kMax the band with the largest summed magnitude
 // over the points, kFused for Di Zenzo, kGrey for grey (gradient.method).
-Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map,
-                         const GradientField& gradient);
+Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map, const GradientField& gradient);
 
-// Mean colour of the strips [offset, offset + width] px on either side of
-// the segment, sampled bilinearly every pixel along it and every pixel
-// across; samples outside the image are skipped (zero colour when none).
-// `image` is the CV_32FC3 or CV_32FC1 input.
-void MeasureSideColours(Segment2D& segment, const cv::Mat& image, double offset, double width);
+// Mean colour along the lines parallel to the segment at `distance` px on
+// either side, one bilinear sample per pixel of length; samples outside
+// the image are skipped (zero colour when none). `image` is the CV_32FC3
+// or CV_32FC1 input.
+void MeasureSideColours(Segment2D& segment, const cv::Mat& image, double distance);
 
 }  // namespace roofsweep
