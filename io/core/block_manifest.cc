@@ -170,15 +170,9 @@ void ValidateManifest(const BlockManifest& m, bool check_images) {
   }
 }
 
-Block ManifestToBlock(const BlockManifest& m) {
-  ValidateManifest(m, false);
-  const double undulation = m.height_type == "orthometric" ? m.geoid_undulation : 0.0;
-
-  std::unique_ptr<DtmRaster> dtm;
-  if (!m.dtm.empty())
-    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(m.dtm, m.base_dir), m.crs);
-
-  // Origin: under the middle of the block, on the ground where it is known.
+// Origin of the local frame: under the middle of the block, on the ground
+// where it is known.
+static Eigen::Vector3d FrameOrigin(const BlockManifest& m, DtmRaster* dtm) {
   const Eigen::Vector3d mean = MeanPosition(m);
   Eigen::Vector3d origin = mean;
   if (m.ground_height) {
@@ -187,6 +181,26 @@ Block ManifestToBlock(const BlockManifest& m) {
     const double h = dtm->SampleCrsPoint(mean.head<2>());
     origin.z() = std::isfinite(h) ? h : 0.5 * (dtm->min_height() + dtm->max_height());
   }
+  return origin;
+}
+
+LocalFrame ManifestLocalFrame(const BlockManifest& m) {
+  std::unique_ptr<DtmRaster> dtm;
+  if (!m.dtm.empty() && !m.ground_height)
+    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(m.dtm, m.base_dir), m.crs);
+  const double undulation = m.height_type == "orthometric" ? m.geoid_undulation : 0.0;
+  return LocalFrame(m.crs, FrameOrigin(m, dtm.get()), undulation);
+}
+
+Block ManifestToBlock(const BlockManifest& m) {
+  ValidateManifest(m, false);
+  const double undulation = m.height_type == "orthometric" ? m.geoid_undulation : 0.0;
+
+  std::unique_ptr<DtmRaster> dtm;
+  if (!m.dtm.empty())
+    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(m.dtm, m.base_dir), m.crs);
+
+  const Eigen::Vector3d origin = FrameOrigin(m, dtm.get());
   LocalFrame frame = [&] {
     try {
       return LocalFrame(m.crs, origin, undulation);

@@ -7,6 +7,7 @@
 
 #include "algorithms/geometry/block.h"
 #include "algorithms/geometry/camera.h"
+#include "io/core/local_frame.h"
 
 namespace roofsweep {
 
@@ -65,5 +66,9 @@ void ValidateManifest(const BlockManifest& manifest, bool check_images);
 // when there is a CRS): positions through PROJ, rotations from grid to ENU,
 // ground height or DTM resampled into the local frame.
 Block ManifestToBlock(const BlockManifest& manifest);
+
+// The local frame ManifestToBlock uses for this manifest (same CRS, origin
+// and undulation), to take results back to CRS coordinates.
+LocalFrame ManifestLocalFrame(const BlockManifest& manifest);
 
 }  // namespace roofsweep

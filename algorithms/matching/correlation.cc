@@ -1,0 +1,146 @@
+#include "algorithms/matching/correlation.h"
+#include <Eigen/Geometry>
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace roofsweep {
+
+double Ncc(const float* a, const float* b, int n) {
+  if (n < 2) return 0;
+  double sa = 0, sb = 0;
+  for (int i = 0; i < n; ++i) {
+    sa += a[i];
+    sb += b[i];
+  }
+  const double ma = sa / n, mb = sb / n;
+  double saa = 0, sbb = 0, sab = 0;
+  for (int i = 0; i < n; ++i) {
+    const double da = a[i] - ma, db = b[i] - mb;
+    saa += da * da;
+    sbb += db * db;
+    sab += da * db;
+  }
+  // Quantisation-level variance is no texture to correlate.
+  if (saa < 1e-6 * n || sbb < 1e-6 * n) return 0;
+  return sab / std::sqrt(saa * sbb);
+}
+
+namespace {
+
+struct Strip {
+  int cols = 0, rows = 0;
+  std::vector<float> b1, b2;  // bands (a*, b*) or (L*, L*)
+  std::vector<char> valid;
+};
+
+// Samples the parallelogram of one side: column u at point p(u) on the
+// segment, row m at perpendicular distance offset + 0.5 + m, stepping along
+// the epipolar direction. Columns stop at another contour.
+void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts, int seg_id,
+                const Eigen::Vector2d& normal, const Eigen::Vector3d& epipole, double scale,
+                const SideColour& attr, const MatchOptions& o, Strip* st) {
+  st->cols = static_cast<int>(pts.size());
+  st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
+  st->b1.assign(st->cols * st->rows, 0.f);
+  st->b2.assign(st->cols * st->rows, 0.f);
+  st->valid.assign(st->cols * st->rows, 0);
+  const double lo = attr.l_location - o.l_outlier_sigmas * attr.l_scale;
+  const double hi = attr.l_location + o.l_outlier_sigmas * attr.l_scale;
+  for (int u = 0; u < st->cols; ++u) {
+    Eigen::Vector2d d = EpipolarDirection(epipole, pts[u]);
+    double c = d.dot(normal);
+    if (c < 0) {
+      d = -d;
+      c = -c;
+    }
+    if (c < 0.2) continue;  // nearly along the segment: no usable area
+    const Eigen::Vector2d step = d / c * scale;
+    for (int m = 0; m < st->rows; ++m) {
+      const Eigen::Vector2d p = v.ToImage(pts[u] + (o.region_offset + 0.5 + m) * step);
+      if (!v.Inside(p)) break;
+      const int l = v.labels.at<int>(static_cast<int>(p.y()), static_cast<int>(p.x()));
+      if (l >= 0 && l != seg_id) break;
+      float lab[3];
+      if (!SampleBilinear(v.lab, p, lab)) break;
+      if (attr.valid && (lab[0] < lo || lab[0] > hi)) continue;
+      const int k = m * st->cols + u;
+      if (v.grey) {
+        st->b1[k] = lab[0];
+        st->b2[k] = lab[0];
+      } else {
+        st->b1[k] = lab[1];
+        st->b2[k] = lab[2];
+      }
+      st->valid[k] = 1;
+    }
+  }
+}
+
+}  // namespace
+
+double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const PairGeometry& g,
+                       const PairHypothesis& h, int side, const MatchOptions& o) {
+  const Segment2D& s = vi.ideal[h.si];
+  const Segment2D& t = vj.ideal[h.sj];
+  const double len = (h.lb - h.la) * s.Length();
+  const int n = std::max(2, static_cast<int>(len / o.sample_step) + 1);
+  std::vector<Eigen::Vector2d> pi, pj;
+  pi.reserve(n);
+  pj.reserve(n);
+  for (int k = 0; k < n; ++k) {
+    const double lam = h.la + (h.lb - h.la) * (k + 0.5) / n;
+    const Eigen::Vector2d p = s.p0 + lam * (s.p1 - s.p0);
+    const auto q = EpipolarTransfer(g, p, t);
+    if (!q) return -9;
+    pi.push_back(p);
+    pj.push_back(*q);
+  }
+  const int side_i = side == 0 ? 1 : -1;
+  const int side_j = h.reversed ? -side_i : side_i;
+  const Eigen::Vector2d ni = s.LeftNormal() * side_i;
+  const Eigen::Vector2d nj = t.LeftNormal() * side_j;
+  const SideColour& ai = vi.sides[h.si][side];
+  const SideColour& aj = vj.sides[h.sj][(side_j == side_i) ? side : 1 - side];
+  Strip a, b;
+  SampleSide(vi, pi, h.si, ni, g.e_i, 1.0, ai, o, &a);
+  const int half = std::max(1, static_cast<int>(std::lround(o.ncc_window / o.sample_step / 2)));
+  std::vector<float> x1, x2, y1, y2;
+  double best = -9;
+  const int steps = std::max(1, o.scale_steps);
+  for (int k = 0; k < steps; ++k) {
+    // Geometric series from 1/max_scale to max_scale.
+    const double e = steps == 1 ? 0.0 : -1.0 + 2.0 * k / (steps - 1);
+    const double scale = std::pow(o.max_scale, e);
+    SampleSide(vj, pj, h.sj, nj, g.e_j, scale, aj, o, &b);
+    double sum = 0;
+    int windows = 0;
+    for (int u = 0; u < a.cols; u += std::max(1, half)) {
+      x1.clear();
+      x2.clear();
+      y1.clear();
+      y2.clear();
+      for (int w = std::max(0, u - half); w <= std::min(a.cols - 1, u + half); ++w)
+        for (int m = 0; m < a.rows; ++m) {
+          const int idx = m * a.cols + w;
+          if (!a.valid[idx] || !b.valid[idx]) continue;
+          x1.push_back(a.b1[idx]);
+          y1.push_back(b.b1[idx]);
+          x2.push_back(a.b2[idx]);
+          y2.push_back(b.b2[idx]);
+        }
+      if (x1.size() < 10) continue;
+      const int cnt = static_cast<int>(x1.size());
+      const double hv = vi.grey || vj.grey
+                            ? 2.0 * Ncc(x1.data(), y1.data(), cnt)
+                            : Ncc(x1.data(), y1.data(), cnt) + Ncc(x2.data(), y2.data(), cnt);
+      sum += hv;
+      ++windows;
+    }
+    if (windows > 0) best = std::max(best, sum / windows);
+  }
+  return best;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,490 @@
+#include "algorithms/matching/match_lines.h"
+#include <Eigen/Geometry>
+#include <Eigen/Dense>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include "algorithms/core/error.h"
+#include "algorithms/edges/extract_segments.h"
+#include "algorithms/matching/assignment.h"
+#include "algorithms/matching/correlation.h"
+#include "algorithms/matching/epipolar.h"
+#include "algorithms/matching/line_triangulation.h"
+#include "algorithms/matching/view_features.h"
+
+namespace roofsweep {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+double Seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Ids of the true edges each segment lies on (both endpoints within 1.5 px
+// of the projected edge line, directions within 3 degrees, overlapping it).
+std::vector<std::vector<int>> TruthLabels(const ViewFeatures& v,
+                                          const std::vector<Segment3>& edges,
+                                          double min_length) {
+  std::vector<std::vector<int>> labels(v.ideal.size());
+  const double tol = 1.5, cos_max = std::cos(3 * kDeg);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const auto a = ProjectIdeal(v, edges[e].a), b = ProjectIdeal(v, edges[e].b);
+    if (!a || !b || (*b - *a).norm() < 2) continue;
+    Segment2D pe;
+    pe.p0 = *a;
+    pe.p1 = *b;
+    const Eigen::Vector2d d = pe.Direction(), n(-d.y(), d.x());
+    const double len = pe.Length();
+    for (int id : v.index->Near(pe, tol)) {
+      const Segment2D& s = v.ideal[id];
+      if (s.Length() < min_length) continue;
+      if (std::abs(s.Direction().dot(d)) < cos_max) continue;
+      if (std::abs((s.p0 - pe.p0).dot(n)) > tol || std::abs((s.p1 - pe.p0).dot(n)) > tol) continue;
+      const double u = (s.Midpoint() - pe.p0).dot(d);
+      if (u < 0 || u > len) continue;
+      labels[id].push_back(static_cast<int>(e));
+    }
+  }
+  return labels;
+}
+
+bool Shares(const std::vector<int>& a, const std::vector<int>& b) {
+  for (int x : a)
+    for (int y : b)
+      if (x == y) return true;
+  return false;
+}
+
+// A detected segment of view k supporting the projection [a, b]: the one
+// overlapping it most, or -1.
+int SupportingSegment(const ViewFeatures& v, const Segment2D& proj, const MatchOptions& o) {
+  const Eigen::Vector2d d = proj.Direction(), n(-d.y(), d.x());
+  const double len = proj.Length(), cos_max = std::cos(o.verify_max_angle * kDeg);
+  int best = -1;
+  double best_overlap = 0;
+  for (int id : v.index->Near(proj, o.verify_distance)) {
+    const Segment2D& s = v.ideal[id];
+    if (s.Length() < 0.5 * o.min_length) continue;
+    if (std::abs(s.Direction().dot(d)) < cos_max) continue;
+    if (std::abs((s.p0 - proj.p0).dot(n)) > o.verify_distance ||
+        std::abs((s.p1 - proj.p0).dot(n)) > o.verify_distance)
+      continue;
+    const double u0 = (s.p0 - proj.p0).dot(d), u1 = (s.p1 - proj.p0).dot(d);
+    const double overlap = std::min(len, std::max(u0, u1)) - std::max(0.0, std::min(u0, u1));
+    if (overlap > best_overlap) {
+      best_overlap = overlap;
+      best = id;
+    }
+  }
+  return best_overlap >= std::min(o.verify_min_length, 0.5 * len) ? best : -1;
+}
+
+// Mean over the projection of the strongest L* gradient within 1 px across it.
+double GradientAlong(const ViewFeatures& v, const Segment2D& proj) {
+  const Eigen::Vector2d d = proj.Direction(), n(-d.y(), d.x());
+  const int steps = static_cast<int>(proj.Length());
+  double sum = 0;
+  int cnt = 0;
+  for (int k = 0; k < steps; ++k) {
+    double best = 0;
+    bool any = false;
+    for (double off : {-1.0, 0.0, 1.0}) {
+      const Eigen::Vector2d p = v.ToImage(proj.p0 + (k + 0.5) * d + off * n);
+      float g;
+      if (SampleBilinear(v.gradient, p, &g)) {
+        best = std::max(best, static_cast<double>(g));
+        any = true;
+      }
+    }
+    if (any) {
+      sum += best;
+      ++cnt;
+    }
+  }
+  return cnt > 0 ? sum / cnt : 0;
+}
+
+// Clips the segment a-b to the image rectangle (ideal coordinates taken as
+// image coordinates: distortion only moves the border slightly).
+bool ClipToImage(const ViewFeatures& v, Eigen::Vector2d* a, Eigen::Vector2d* b) {
+  double t0 = 0, t1 = 1;
+  const Eigen::Vector2d d = *b - *a;
+  const double lo[2] = {0, 0}, hi[2] = {static_cast<double>(v.lab.cols),
+                                        static_cast<double>(v.lab.rows)};
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(d[k]) < 1e-12) {
+      if ((*a)[k] < lo[k] || (*a)[k] > hi[k]) return false;
+      continue;
+    }
+    double ta = (lo[k] - (*a)[k]) / d[k], tb = (hi[k] - (*a)[k]) / d[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  if (t0 >= t1) return false;
+  const Eigen::Vector2d a0 = *a;
+  *a = a0 + t0 * d;
+  *b = a0 + t1 * d;
+  return true;
+}
+
+struct Verified {
+  PairHypothesis h;
+  std::vector<std::pair<int, int>> support;  // (feature index, segment)
+};
+
+}  // namespace
+
+MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
+                       const MatchOptions& o, const EdgeOptions& edge_options,
+                       Progress& progress, const std::vector<Segment3>* truth) {
+  MatchResult res;
+  const int nv = static_cast<int>(block.views.size());
+  if (static_cast<int>(images.size()) != nv)
+    throw Error("match: " + std::to_string(images.size()) + " images for " + std::to_string(nv) +
+                " views");
+  if (nv < 2) {
+    res.messages.push_back("match: the block has " + std::to_string(nv) +
+                           " view(s); matching needs at least two: no 3D lines");
+    return res;
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  ReportOrCancel(progress, 0.0, "edges");
+  res.segments.resize(nv);
+  tbb::parallel_for(0, nv, [&](int v) { res.segments[v] = ExtractSegments(images[v], edge_options); });
+  res.timings.edges_s = Seconds(t0);
+  for (const auto& s : res.segments) res.funnel.segments += static_cast<long long>(s.size());
+
+  t0 = std::chrono::steady_clock::now();
+  ReportOrCancel(progress, 0.2, "flanking regions");
+  std::vector<ViewFeatures> views(nv);
+  tbb::parallel_for(0, nv, [&](int v) {
+    views[v] = PrepareView(block, v, images[v], res.segments[v], o);
+  });
+  res.timings.features_s = Seconds(t0);
+
+  std::vector<std::vector<std::vector<int>>> labels;
+  if (truth) {
+    labels.resize(nv);
+    tbb::parallel_for(0, nv, [&](int v) { labels[v] = TruthLabels(views[v], *truth, o.min_length); });
+    res.funnel.true_all = res.funnel.true_geometric = res.funnel.true_chromatic =
+        res.funnel.true_correlation = res.funnel.true_verified = res.funnel.true_assigned = 0;
+  }
+
+  const auto z_range = SceneHeightRange(block, o.height_margin_m);
+  t0 = std::chrono::steady_clock::now();
+  std::vector<Verified> hyps;
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = 0; i < nv; ++i)
+    for (int j = i + 1; j < nv; ++j) pairs.emplace_back(i, j);
+  int pair_no = 0;
+  int identical = 0;
+  for (const auto& [i, j] : pairs) {
+    ReportOrCancel(progress, 0.25 + 0.5 * pair_no++ / pairs.size(), "candidates");
+    const PairGeometry g = MakePairGeometry(views[i], views[j]);
+    if (!g.valid) {
+      ++identical;
+      continue;
+    }
+    const int ns = static_cast<int>(views[i].ideal.size());
+    std::vector<std::vector<PairHypothesis>> cand(ns);
+    std::vector<char> skipped(ns, 0);
+    tbb::parallel_for(0, ns, [&](int s) {
+      if (views[i].ideal[s].Length() < o.min_length) return;
+      if (EpipolarAngle(g.e_i, views[i].ideal[s]) < o.min_epipolar_angle) {
+        skipped[s] = 1;
+        return;
+      }
+      cand[s] = GeometricCandidates(views[i], views[j], i, j, g, s, z_range, o);
+    });
+    long long geometric = 0;
+    for (int s = 0; s < ns; ++s) {
+      geometric += static_cast<long long>(cand[s].size());
+      res.funnel.skipped_epipolar += skipped[s];
+    }
+    if (geometric == 0) continue;
+    ++res.funnel.view_pairs;
+    res.funnel.geometric += geometric;
+
+    // Side pairs: left of si goes with left of sj unless sj is reversed.
+    auto side_j = [](const PairHypothesis& h, int side) { return h.reversed ? 1 - side : side; };
+    ChromaticThresholds thr;
+    if (o.mean_threshold > 0 && o.cov_threshold > 0) {
+      thr.mean = o.mean_threshold;
+      thr.cov = o.cov_threshold;
+    } else {
+      std::vector<int> with;
+      for (int s = 0; s < ns; ++s)
+        if (!cand[s].empty()) with.push_back(s);
+      std::mt19937 rng(o.seed + static_cast<unsigned>(i * 1000 + j));
+      std::shuffle(with.begin(), with.end(), rng);
+      with.resize(std::min<size_t>(with.size(), static_cast<size_t>(o.init_segments)));
+      std::vector<std::pair<double, double>> stats;
+      for (int s : with)
+        for (const PairHypothesis& h : cand[s])
+          for (int side = 0; side < 2; ++side) {
+            const SideColour& a = views[i].sides[s][side];
+            const SideColour& b = views[j].sides[h.sj][side_j(h, side)];
+            if (a.valid && b.valid)
+              stats.emplace_back(MeanStatistic(a, b, o.max_test_pixels),
+                                 CovStatistic(a, b, o.max_test_pixels));
+          }
+      thr = InitThresholds(stats, o.threshold_factor);
+    }
+
+    std::vector<std::array<long long, 3>> counts(ns, {0, 0, 0});
+    std::vector<std::array<long long, 3>> tcounts(ns, {0, 0, 0});
+    tbb::parallel_for(0, ns, [&](int s) {
+      std::vector<PairHypothesis> kept;
+      for (PairHypothesis& h : cand[s]) {
+        const bool is_true = truth && Shares(labels[i][s], labels[j][h.sj]);
+        h.true_pair = truth ? (is_true ? 1 : 0) : -1;
+        if (is_true) ++tcounts[s][0];
+        for (int side = 0; side < 2; ++side)
+          if (SidesCompatible(views[i].sides[s][side], views[j].sides[h.sj][side_j(h, side)], thr,
+                              o.max_test_pixels))
+            h.sides |= 1 << side;
+        if (h.sides == 0) continue;
+        ++counts[s][1];
+        if (is_true) ++tcounts[s][1];
+        double best = -9;
+        for (int side = 0; side < 2; ++side) {
+          if (!(h.sides & (1 << side))) continue;
+          h.corr[side] = SideCorrelation(views[i], views[j], g, h, side, o);
+          best = std::max(best, h.corr[side]);
+        }
+        if (!(best > o.min_correlation)) continue;
+        h.score = best;
+        ++counts[s][2];
+        if (is_true) ++tcounts[s][2];
+        kept.push_back(h);
+      }
+      cand[s] = std::move(kept);
+    });
+    for (int s = 0; s < ns; ++s) {
+      res.funnel.chromatic += counts[s][1];
+      res.funnel.correlation += counts[s][2];
+      if (truth) {
+        res.funnel.true_geometric += tcounts[s][0];
+        res.funnel.true_chromatic += tcounts[s][1];
+        res.funnel.true_correlation += tcounts[s][2];
+      }
+      for (PairHypothesis& h : cand[s]) hyps.push_back({h, {}});
+    }
+    if (truth) {
+      // All true pairs of this view pair, whatever the stages did.
+      for (int s = 0; s < ns; ++s) {
+        if (labels[i][s].empty()) continue;
+        for (size_t t = 0; t < views[j].ideal.size(); ++t)
+          if (!labels[j][t].empty() && Shares(labels[i][s], labels[j][t])) ++res.funnel.true_all;
+      }
+    }
+  }
+  res.timings.candidates_s = Seconds(t0);
+  if (identical > 0)
+    res.messages.push_back("match: " + std::to_string(identical) +
+                           " view pair(s) share a projection centre (no stereo): skipped");
+  if (res.funnel.view_pairs == 0) {
+    res.messages.push_back(
+        "match: no pair of views with distinct centres and overlapping epipolar strips: no 3D "
+        "lines");
+    return res;
+  }
+
+  // Verification in the other views.
+  t0 = std::chrono::steady_clock::now();
+  ReportOrCancel(progress, 0.8, "verification");
+  std::vector<char> accepted(hyps.size(), 0);
+  tbb::parallel_for(size_t{0}, hyps.size(), [&](size_t n) {
+    Verified& vh = hyps[n];
+    const PairHypothesis& h = vh.h;
+    int seeing = 0, supporting = 0;
+    for (int k = 0; k < nv; ++k) {
+      if (k == h.vi || k == h.vj) continue;
+      auto a = ProjectIdeal(views[k], h.line.a), b = ProjectIdeal(views[k], h.line.b);
+      if (!a || !b) continue;
+      Eigen::Vector2d pa = *a, pb = *b;
+      if (!ClipToImage(views[k], &pa, &pb) || (pb - pa).norm() < o.verify_min_length) continue;
+      ++seeing;
+      Segment2D proj;
+      proj.p0 = pa;
+      proj.p1 = pb;
+      const int sup = SupportingSegment(views[k], proj, o);
+      if (sup >= 0) {
+        vh.support.emplace_back(k, sup);
+        ++supporting;
+      } else if (GradientAlong(views[k], proj) >= o.verify_min_gradient) {
+        ++supporting;
+      }
+    }
+    accepted[n] = seeing == 0 || supporting >= std::max(1.0, std::ceil(o.min_support_fraction * seeing));
+    vh.h.score += static_cast<double>(vh.support.size());
+  });
+  std::vector<Verified> kept;
+  for (size_t n = 0; n < hyps.size(); ++n)
+    if (accepted[n]) kept.push_back(std::move(hyps[n]));
+  hyps = std::move(kept);
+  res.funnel.verified = static_cast<long long>(hyps.size());
+  if (truth)
+    for (const Verified& v : hyps) res.funnel.true_verified += v.h.true_pair == 1;
+  res.timings.verify_s = Seconds(t0);
+
+  // One-to-one assignment.
+  t0 = std::chrono::steady_clock::now();
+  std::vector<AssignmentItem> items(hyps.size());
+  for (size_t n = 0; n < hyps.size(); ++n) {
+    items[n].score = hyps[n].h.score;
+    items[n].keys = {{hyps[n].h.vi, hyps[n].h.si}, {hyps[n].h.vj, hyps[n].h.sj}};
+    for (const auto& s : hyps[n].support) items[n].keys.push_back(s);
+  }
+  const auto assigned = AssignOneToOne(items);
+  res.timings.assign_s = Seconds(t0);
+
+  // 3D estimation.
+  t0 = std::chrono::steady_clock::now();
+  ReportOrCancel(progress, 0.9, "triangulation");
+  auto observe = [&](int v, int s) {
+    return LineObservation{views[v].P, views[v].ideal[s].p0, views[v].ideal[s].p1};
+  };
+  std::vector<int> track_of;
+  for (size_t n = 0; n < hyps.size(); ++n)
+    if (!assigned[n].empty()) track_of.push_back(static_cast<int>(n));
+  res.funnel.assigned = static_cast<long long>(track_of.size());
+  if (truth)
+    for (int n : track_of) res.funnel.true_assigned += hyps[n].h.true_pair == 1;
+  std::vector<Line3D> lines(track_of.size());
+  std::vector<char> ok(track_of.size(), 0);
+  auto estimate = [&](const std::vector<std::pair<int, int>>& obs_keys, const Segment3& init,
+                      Line3D* line) {
+    std::vector<LineObservation> obs;
+    for (const auto& [v, s] : obs_keys) obs.push_back(observe(v, s));
+    const LineEstimate est = TriangulateLine(obs, init);
+    if (!est.valid || est.rms_px > o.max_residual) return false;
+    line->segment = est.segment;
+    line->rms_px = est.rms_px;
+    line->observations = obs_keys;
+    // Orient like the first observation.
+    const auto& [v0, s0] = obs_keys.front();
+    const auto pa = ProjectIdeal(views[v0], line->segment.a), pb = ProjectIdeal(views[v0], line->segment.b);
+    if (pa && pb && (*pb - *pa).dot(views[v0].ideal[s0].p1 - views[v0].ideal[s0].p0) < 0)
+      std::swap(line->segment.a, line->segment.b);
+    line->colour_left = res.segments[v0][s0].colour_left;
+    line->colour_right = res.segments[v0][s0].colour_right;
+    return true;
+  };
+  tbb::parallel_for(size_t{0}, track_of.size(), [&](size_t k) {
+    const Verified& vh = hyps[track_of[k]];
+    ok[k] = estimate(assigned[track_of[k]], vh.h.line, &lines[k]) &&
+            lines[k].Views() >= o.min_views;
+  });
+  std::vector<Line3D> good;
+  for (size_t k = 0; k < lines.size(); ++k)
+    if (ok[k]) good.push_back(std::move(lines[k]));
+  res.funnel.lines_before_merge = static_cast<int>(good.size());
+
+  // Merge collinear fragments (union-find over close, parallel, overlapping
+  // or nearly touching lines), then re-estimate from all observations.
+  const int nl = static_cast<int>(good.size());
+  std::vector<int> parent(nl);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  const double cos_merge = std::cos(o.merge_angle * kDeg);
+  std::vector<int> by_x(nl);
+  std::iota(by_x.begin(), by_x.end(), 0);
+  auto minx = [&](int k) { return std::min(good[k].segment.a.x(), good[k].segment.b.x()); };
+  auto maxx = [&](int k) { return std::max(good[k].segment.a.x(), good[k].segment.b.x()); };
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return minx(a) < minx(b); });
+  for (int ia = 0; ia < nl; ++ia) {
+    const int a = by_x[ia];
+    const Segment3& A = good[a].segment;
+    for (int ib = ia + 1; ib < nl; ++ib) {
+      const int b = by_x[ib];
+      if (minx(b) > maxx(a) + o.merge_gap_m) break;
+      const Segment3& B = good[b].segment;
+      if (std::abs(A.Direction().dot(B.Direction())) < cos_merge) continue;
+      const Eigen::Vector3d d = A.Direction();
+      auto off = [&](const Eigen::Vector3d& p) {
+        const Eigen::Vector3d w = p - A.a;
+        return (w - w.dot(d) * d).norm();
+      };
+      if (off(B.a) > o.merge_distance_m || off(B.b) > o.merge_distance_m) continue;
+      const double la = 0, lb = A.Length();
+      const double u0 = (B.a - A.a).dot(d), u1 = (B.b - A.a).dot(d);
+      const double gap = std::max(std::min(u0, u1) - lb, la - std::max(u0, u1));
+      if (gap > o.merge_gap_m) continue;
+      // Two fragments seen in the same view as different segments may still
+      // be one line; the observations are merged as they are.
+      parent[find(a)] = find(b);
+    }
+  }
+  std::map<int, std::vector<int>> groups;
+  for (int k = 0; k < nl; ++k) groups[find(k)].push_back(k);
+  for (auto& [root, members] : groups) {
+    if (members.size() == 1) {
+      res.lines.push_back(good[members[0]]);
+      continue;
+    }
+    std::vector<std::pair<int, int>> keys;
+    int longest = members[0];
+    for (int m : members) {
+      if (good[m].segment.Length() > good[longest].segment.Length()) longest = m;
+      for (const auto& k : good[m].observations)
+        if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
+    }
+    Line3D merged;
+    if (estimate(keys, good[longest].segment, &merged)) {
+      res.lines.push_back(merged);
+    } else {
+      for (int m : members) res.lines.push_back(good[m]);
+    }
+  }
+  res.funnel.lines = static_cast<int>(res.lines.size());
+  res.timings.triangulate_s = Seconds(t0);
+  ReportOrCancel(progress, 1.0, "done");
+  return res;
+}
+
+std::string FormatFunnel(const MatchFunnel& f) {
+  std::ostringstream out;
+  char buf[200];
+  out << "Reduction of match candidates (Scholze et al. 2000, sec. 4), " << f.view_pairs
+      << " view pairs, " << f.segments << " segments:\n";
+  const bool t = f.true_all >= 0;
+  std::snprintf(buf, sizeof buf, "  %-28s %12s%s\n", "stage", "pairs", t ? "   true pairs  kept" : "");
+  out << buf;
+  auto row = [&](const char* name, long long n, long long tn) {
+    if (t) {
+      std::snprintf(buf, sizeof buf, "  %-28s %12lld %12lld %5.1f%%\n", name, n, tn,
+                    f.true_all > 0 ? 100.0 * tn / f.true_all : 0.0);
+    } else {
+      std::snprintf(buf, sizeof buf, "  %-28s %12lld\n", name, n);
+    }
+    out << buf;
+  };
+  if (t) row("all segment pairs (truth)", -1, f.true_all);
+  row("geometric", f.geometric, f.true_geometric);
+  row("chromatic (integrated)", f.chromatic, f.true_chromatic);
+  row("chromatic correlation", f.correlation, f.true_correlation);
+  row("verified in other views", f.verified, f.true_verified);
+  row("one-to-one (final)", f.assigned, f.true_assigned);
+  std::snprintf(buf, sizeof buf, "  3D lines: %d (before merging collinear fragments: %d)\n", f.lines,
+                f.lines_before_merge);
+  out << buf;
+  std::snprintf(buf, sizeof buf, "  segment/pair combinations skipped as nearly epipolar: %lld\n",
+                f.skipped_epipolar);
+  out << buf;
+  return out.str();
+}
+
+}  // namespace roofsweep

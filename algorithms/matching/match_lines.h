@@ -1,0 +1,73 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algorithms/core/progress.h"
+#include "algorithms/edges/edge_options.h"
+#include "algorithms/edges/segment2d.h"
+#include "algorithms/geometry/block.h"
+#include "algorithms/geometry/segment3.h"
+#include "algorithms/matching/chromatic_test.h"
+#include "algorithms/matching/match_options.h"
+
+namespace roofsweep {
+
+// A reconstructed 3D line with what supports it.
+struct Line3D {
+  Segment3 segment;  // local frame; a -> b runs like the first observation's p0 -> p1
+  std::vector<std::pair<int, int>> observations;  // (view index, segment id)
+  double rms_px = 0;                              // reprojection residual
+  // Mean RGB ([0, 1]) of the flanking strips left and right of the first
+  // observation, walking a -> b.
+  Eigen::Vector3f colour_left = Eigen::Vector3f::Zero();
+  Eigen::Vector3f colour_right = Eigen::Vector3f::Zero();
+  int Views() const { return static_cast<int>(observations.size()); }
+};
+
+// Counts of the reduction funnel (Scholze et al. 2000, §4) summed over the
+// view pairs, with the ground-truth counterparts when truth was given.
+struct MatchFunnel {
+  long long segments = 0;     // detected, all views
+  int view_pairs = 0;         // pairs with distinct centres
+  long long skipped_epipolar = 0;  // segment/pair combinations nearly along the epipolar lines
+  long long geometric = 0, chromatic = 0, correlation = 0, verified = 0, assigned = 0;
+  int lines_before_merge = 0, lines = 0;
+  // Ground truth (-1: unknown): true pairs among all segment pairs of
+  // overlapping views, and how many of them survive each stage.
+  long long true_all = -1, true_geometric = -1, true_chromatic = -1, true_correlation = -1,
+            true_verified = -1, true_assigned = -1;
+};
+
+struct MatchTimings {
+  double edges_s = 0, features_s = 0, candidates_s = 0, verify_s = 0, assign_s = 0,
+         triangulate_s = 0;
+};
+
+struct MatchResult {
+  std::vector<Segments2D> segments;  // per view, as detected
+  std::vector<Line3D> lines;
+  MatchFunnel funnel;
+  MatchTimings timings;
+  std::vector<std::string> messages;  // why a result is empty or partial
+};
+
+// Matches the straight segments of all views and reconstructs 3D lines
+// (Scholze et al. 2000, §3, extended to many views). `images`: one per
+// block view, CV_32FC3 RGB or CV_32FC1 in [0, 1]. Edges are extracted first
+// (TBB across images) with `edge_options`. A block with fewer than two
+// views, or without pairs of distinct overlapping views, gives an empty
+// result with a message. `truth_edges` (local frame) enables the
+// ground-truth counts of the funnel. Throws roofsweep::Error when the image
+// count differs from the view count.
+MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
+                       const MatchOptions& options, const EdgeOptions& edge_options,
+                       Progress& progress, const std::vector<Segment3>* truth_edges = nullptr);
+
+// The funnel as the paper's table (text).
+std::string FormatFunnel(const MatchFunnel& funnel);
+
+}  // namespace roofsweep

@@ -1,0 +1,88 @@
+#pragma once
+
+namespace roofsweep {
+
+// Options of MatchLines (Scholze et al. 2000, §3). Lengths in pixels unless
+// the name says metres, angles in degrees.
+struct MatchOptions {
+  // ---- geometric candidates (§3.1)
+  // A candidate's direction may differ from the segment's by at most this
+  // (undirected; corresponding edges in near-nadir aerial views turn little).
+  double max_angle_deviation = 20.0;
+  // Height range of the scene: ground (constant or DTM, else the lowest
+  // camera minus 1000 m) minus this margin up to ground + max building height
+  // + this margin; it limits the disparities along the epipolar strip.
+  double height_margin_m = 3.0;
+  // Segments shorter than this are not matched (the paper uses 15 px).
+  double min_length = 15.0;
+  // Where the segment meets the epipolar lines of the other view at less than
+  // this angle, the pair is skipped and other views are used (§3.4).
+  double min_epipolar_angle = 40.0;
+  // Minimum length of the common part of both segments (px in the first view).
+  double min_common_length = 10.0;
+
+  // ---- chromatic attributes (§3.2)
+  double region_offset = 1.0;  // px between the segment and its flanking region
+  double region_width = 10.0;  // px
+  // L* outliers: farther than this many robust standard deviations from the
+  // univariate MCD location.
+  double l_outlier_sigmas = 2.5;
+  int min_region_pixels = 20;  // fewer: the side has no attributes
+
+  // ---- chromatic tests (§3.3)
+  // Thresholds on t_mean (eq. 5) and t_cov (eq. 6): <= 0 means automatic,
+  // threshold_factor times the median of the statistics of ~init_segments
+  // random segments' geometric candidates, after dropping those rejected at
+  // significance 0.001 (chi2 quantiles 13.82 for 2 dof, 16.27 for 3 dof).
+  double mean_threshold = -1;
+  double cov_threshold = -1;
+  int init_segments = 10;
+  // The median alone would reject half of the correct pairs; the factor
+  // turns it into a threshold (measured on the simulated blocks, see report).
+  double threshold_factor = 8.0;
+  // The statistics grow with the pixel count n; n is capped so that long
+  // segments are not held to a stricter standard than short ones.
+  int max_test_pixels = 200;
+
+  // ---- correlation (§3.4)
+  double ncc_window = 7.0;  // px along the segment, window of pointwise NCC
+  double sample_step = 1.0;  // px along the common part
+  // The flanking area in the second view is scaled by s in [1/max, max]
+  // across the segment (foreshortening), tried in scale_steps steps.
+  double max_scale = 1.4;
+  int scale_steps = 5;
+  // A side correlates when its mean h (ncc_a + ncc_b, in [-2, 2]) exceeds
+  // this (the paper: positive).
+  double min_correlation = 0.0;
+
+  // ---- multi-view verification
+  // A detected segment supports a projected hypothesis when its endpoints
+  // are within this distance of the projected line and directions agree
+  // within verify_max_angle.
+  double verify_distance = 2.0;
+  double verify_max_angle = 5.0;
+  // Where no segment was detected, mean gradient magnitude along the
+  // projection (intensity/px, [0,1] images) above this also supports it.
+  double verify_min_gradient = 0.03;
+  // Fraction of the other views that see the hypothesis that must support it.
+  double min_support_fraction = 0.5;
+  // Projections shorter than this in a view do not count as seeing it.
+  double verify_min_length = 10.0;
+
+  // ---- 3D estimation
+  // Collinear 3D fragments are merged when their directions differ by less
+  // than merge_angle and each endpoint lies within merge_distance_m of the
+  // other line, with a gap at most merge_gap_m.
+  double merge_angle = 2.0;
+  double merge_distance_m = 0.1;
+  double merge_gap_m = 0.5;
+  // Lines with an RMS endpoint-to-line reprojection residual above this are dropped.
+  double max_residual = 1.5;
+  // At least this many views must observe a final line.
+  int min_views = 2;
+
+  // Seed of the random threshold initialisation.
+  unsigned seed = 1;
+};
+
+}  // namespace roofsweep

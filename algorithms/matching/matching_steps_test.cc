@@ -1,0 +1,272 @@
+// Unit tests of the matching steps on synthetic two-view setups.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "algorithms/matching/assignment.h"
+#include "algorithms/matching/chromatic_test.h"
+#include "algorithms/matching/correlation.h"
+#include "algorithms/matching/epipolar.h"
+#include "algorithms/matching/line_triangulation.h"
+#include "algorithms/matching/robust_estimate.h"
+#include "algorithms/matching/view_features.h"
+
+namespace roofsweep {
+namespace {
+
+// Nadir cameras 100 m above z = 0, f = 1000 px, 1000 x 1000 px (10 cm GSD).
+Block TwoViewBlock(double baseline = 30) {
+  Block b;
+  Camera c;
+  c.id = "c";
+  c.width = c.height = 1000;
+  c.fx = c.fy = 1000;
+  c.cx = c.cy = 500;
+  b.cameras.push_back(c);
+  for (int k = 0; k < 2; ++k) {
+    View v;
+    v.name = "v" + std::to_string(k);
+    v.camera = 0;
+    v.pose.R = Eigen::Vector3d(1, -1, -1).asDiagonal();
+    v.pose.C = Eigen::Vector3d(k * baseline - baseline / 2, 0, 100);
+    b.views.push_back(v);
+  }
+  b.ground.height = 0;
+  b.max_building_height = 20;
+  return b;
+}
+
+Segment2D ProjectSeg(const Block& b, int v, const Eigen::Vector3d& A, const Eigen::Vector3d& B) {
+  Segment2D s;
+  s.p0 = *Project(b.cameras[0], b.views[v].pose, A);
+  s.p1 = *Project(b.cameras[0], b.views[v].pose, B);
+  return s;
+}
+
+// Colour texture on the ground: two differently coloured, textured halves
+// either side of x = 0.
+cv::Vec3f Texture(double x, double y) {
+  const float t = static_cast<float>(0.08 * std::sin(1.7 * x + 0.3 * y) + 0.06 * std::cos(2.3 * y - 0.9 * x));
+  const float u = static_cast<float>(0.07 * std::sin(2.9 * y + 1.1 * x));
+  if (x < 0) return cv::Vec3f(0.6f + t, 0.3f + u, 0.2f - t / 2);
+  return cv::Vec3f(0.25f + u, 0.45f - t, 0.55f + t);
+}
+
+cv::Mat RenderGround(const Block& b, int v) {
+  cv::Mat img(b.cameras[0].height, b.cameras[0].width, CV_32FC3);
+  for (int y = 0; y < img.rows; ++y)
+    for (int x = 0; x < img.cols; ++x) {
+      const Ray r = BackProject(b.cameras[0], b.views[v].pose, {x + 0.5, y + 0.5});
+      const auto X = IntersectHorizontalPlane(r, 0.0);
+      img.at<cv::Vec3f>(y, x) = Texture(X->x(), X->y());
+    }
+  return img;
+}
+
+TEST(EpipolarCandidates, StripAngleAndHeightRange) {
+  const Block b = TwoViewBlock();
+  MatchOptions o;
+  // A building edge at 10 m, running north (across the epipolar lines).
+  const Eigen::Vector3d A(2, -5, 10), B(2, 5, 10);
+  Segments2D s0 = {ProjectSeg(b, 0, A, B)};
+  Segments2D s1 = {
+      ProjectSeg(b, 1, A, B),                                              // 0: the match
+      ProjectSeg(b, 1, A + Eigen::Vector3d(0, 30, 0), B + Eigen::Vector3d(0, 30, 0)),  // 1: outside the strip
+      ProjectSeg(b, 1, A + Eigen::Vector3d(-2, 0, 0), A + Eigen::Vector3d(6, 3, 0)),   // 2: wrong angle
+      ProjectSeg(b, 1, A + Eigen::Vector3d(25, 0, 0), B + Eigen::Vector3d(25, 0, 0)),  // 3: far: below ground
+      ProjectSeg(b, 1, A + Eigen::Vector3d(1, 0, 0), B + Eigen::Vector3d(1, 2, 0)),    // 4: plausible
+  };
+  const cv::Mat blank(1000, 1000, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
+  const ViewFeatures v0 = PrepareView(b, 0, blank, s0, o);
+  const ViewFeatures v1 = PrepareView(b, 1, blank, s1, o);
+  const PairGeometry g = MakePairGeometry(v0, v1);
+  ASSERT_TRUE(g.valid);
+  const auto z = SceneHeightRange(b, o.height_margin_m);
+  ASSERT_TRUE(z);
+  const auto c = GeometricCandidates(v0, v1, 0, 1, g, 0, z, o);
+  std::vector<int> ids;
+  for (const auto& h : c) ids.push_back(h.sj);
+  EXPECT_EQ(ids, (std::vector<int>{0, 4}));
+  // The true pair reconstructs the edge.
+  ASSERT_FALSE(c.empty());
+  EXPECT_LT((c[0].line.a - A).norm(), 1e-6);
+  EXPECT_LT((c[0].line.b - B).norm(), 1e-6);
+  EXPECT_FALSE(c[0].reversed);
+  // A segment along the epipolar lines (east-west) gets no candidates.
+  Segments2D e0 = {ProjectSeg(b, 0, {0, 0, 5}, {10, 0, 5})};
+  Segments2D e1 = {ProjectSeg(b, 1, {0, 0, 5}, {10, 0, 5})};
+  const ViewFeatures w0 = PrepareView(b, 0, blank, e0, o);
+  const ViewFeatures w1 = PrepareView(b, 1, blank, e1, o);
+  EXPECT_TRUE(GeometricCandidates(w0, w1, 0, 1, MakePairGeometry(w0, w1), 0, z, o).empty());
+}
+
+TEST(EpipolarCandidates, IdenticalViewsHaveNoGeometry) {
+  Block b = TwoViewBlock();
+  b.views[1].pose = b.views[0].pose;
+  const cv::Mat blank(1000, 1000, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
+  MatchOptions o;
+  const ViewFeatures v0 = PrepareView(b, 0, blank, {}, o), v1 = PrepareView(b, 1, blank, {}, o);
+  EXPECT_FALSE(MakePairGeometry(v0, v1).valid);
+}
+
+SideColour Region(std::mt19937& rng, Eigen::Vector2d mean, double sa, double sb, int n,
+                  double outliers = 0) {
+  std::normal_distribution<double> z(0, 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Eigen::Vector2d> pts;
+  for (int i = 0; i < n; ++i)
+    pts.push_back(u(rng) < outliers ? Eigen::Vector2d(40 + 5 * z(rng), -30 + 5 * z(rng))
+                                    : Eigen::Vector2d(mean + Eigen::Vector2d(sa * z(rng), sb * z(rng))));
+  const Robust2D r = RobustMcd2D(pts, 1);
+  SideColour s;
+  s.valid = r.valid;
+  s.n = r.inliers;
+  s.mean = r.mean;
+  s.cov = r.cov;
+  return s;
+}
+
+TEST(ChromaticTests, SameDistributionPassesDifferentFails) {
+  // The MCD estimates are less efficient than the sample moments, so under
+  // H0 the statistics exceed chi2 (median ~2x); the automatic thresholds
+  // (factor x median of pairs believed correct, sec. 3.3) absorb that.
+  std::mt19937 rng(11);
+  const int trials = 200, n = 150;
+  std::vector<std::pair<double, double>> init;
+  for (int t = 0; t < 40; ++t) {
+    const SideColour a = Region(rng, {10, 20}, 2, 1.5, n);
+    const SideColour b = Region(rng, {10, 20}, 2, 1.5, n, 0.2);
+    init.emplace_back(MeanStatistic(a, b, 1000), CovStatistic(a, b, 1000));
+  }
+  MatchOptions o;
+  const ChromaticThresholds thr = InitThresholds(init, o.threshold_factor);
+  int pass_same = 0, pass_mean = 0, pass_cov = 0;
+  for (int t = 0; t < trials; ++t) {
+    const SideColour a = Region(rng, {10, 20}, 2, 1.5, n);
+    const SideColour same = Region(rng, {10, 20}, 2, 1.5, n, 0.2);  // 20 % outliers
+    const SideColour shifted = Region(rng, {13, 21.5}, 2, 1.5, n);  // 1.5 sigma
+    const SideColour wider = Region(rng, {10, 20}, 6, 4.5, n);      // 3 x the spread
+    pass_same += SidesCompatible(a, same, thr, 1000);
+    pass_mean += MeanStatistic(a, shifted, 1000) <= thr.mean;
+    pass_cov += CovStatistic(a, wider, 1000) <= thr.cov;
+  }
+  EXPECT_GE(pass_same, 0.95 * trials);
+  EXPECT_LE(pass_mean, 0.02 * trials);
+  EXPECT_LE(pass_cov, 0.02 * trials);
+}
+
+TEST(ChromaticTests, ThresholdInitialisationUsesMedians) {
+  std::vector<std::pair<double, double>> stats = {{1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6},
+                                                  {500, 600}, {800, 900}};
+  const ChromaticThresholds t = InitThresholds(stats, 2.0);
+  EXPECT_DOUBLE_EQ(t.mean, 6.0);   // 2 x median {1..5}
+  EXPECT_DOUBLE_EQ(t.cov, 8.0);    // 2 x median {2..6}
+}
+
+TEST(Correlation, NccBasics) {
+  std::vector<float> a = {1, 2, 3, 5, 4}, b, c;
+  for (float x : a) {
+    b.push_back(3 * x + 7);
+    c.push_back(-x);
+  }
+  EXPECT_NEAR(Ncc(a.data(), b.data(), 5), 1.0, 1e-9);
+  EXPECT_NEAR(Ncc(a.data(), c.data(), 5), -1.0, 1e-9);
+  std::vector<float> flat(5, 2.f);
+  EXPECT_EQ(Ncc(a.data(), flat.data(), 5), 0.0);
+}
+
+TEST(Correlation, TruePairCorrelatesShiftedPairDoesNot) {
+  const Block b = TwoViewBlock(20);
+  MatchOptions o;
+  const Eigen::Vector3d A(0, -15, 0), B(0, 15, 0);
+  const cv::Mat i0 = RenderGround(b, 0), i1 = RenderGround(b, 1);
+  Segments2D s0 = {ProjectSeg(b, 0, A, B)};
+  // Segment 1 in view 1 is a false partner 4 m further east (same direction).
+  Segments2D s1 = {ProjectSeg(b, 1, A, B),
+                   ProjectSeg(b, 1, A + Eigen::Vector3d(4, 0, 0), B + Eigen::Vector3d(4, 0, 0))};
+  const ViewFeatures v0 = PrepareView(b, 0, i0, s0, o), v1 = PrepareView(b, 1, i1, s1, o);
+  const PairGeometry g = MakePairGeometry(v0, v1);
+  const auto c = GeometricCandidates(v0, v1, 0, 1, g, 0, std::nullopt, o);
+  ASSERT_EQ(c.size(), 2u);
+  for (int side = 0; side < 2; ++side) {
+    const double good = SideCorrelation(v0, v1, g, c[0], side, o);
+    const double bad = SideCorrelation(v0, v1, g, c[1], side, o);
+    EXPECT_GT(good, 1.5) << "side " << side;
+    EXPECT_LT(bad, 0.5) << "side " << side;
+  }
+  // The chromatic attributes of the true pair agree.
+  for (int side = 0; side < 2; ++side) {
+    EXPECT_LT(MeanStatistic(v0.sides[0][side], v1.sides[0][side], 200), 13.82);
+  }
+}
+
+TEST(Triangulation, AccurateUnderNoise) {
+  Block b = TwoViewBlock(30);
+  View v = b.views[0];
+  v.pose.C = {0, 25, 100};
+  b.views.push_back(v);
+  v.pose.C = {10, -20, 95};
+  b.views.push_back(v);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0, 0.2);
+  double worst = 0, sum2 = 0;
+  int n = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Vector3d A(-5 + trial * 0.3, -4, 8), B(4, 6 - trial * 0.2, 12);
+    std::vector<LineObservation> obs;
+    for (int k = 0; k < 4; ++k) {
+      LineObservation o;
+      o.P = ProjectionMatrix(b.cameras[0], b.views[k].pose);
+      // Each view sees a different stretch of the line.
+      const Eigen::Vector3d a = A + (B - A) * (0.05 * k), bb = B - (B - A) * (0.03 * k);
+      o.q0 = *Project(b.cameras[0], b.views[k].pose, a) + Eigen::Vector2d(noise(rng), noise(rng));
+      o.q1 = *Project(b.cameras[0], b.views[k].pose, bb) + Eigen::Vector2d(noise(rng), noise(rng));
+      obs.push_back(o);
+    }
+    Segment3 init;
+    init.a = A + Eigen::Vector3d(0.5, -0.3, 1.0);
+    init.b = B + Eigen::Vector3d(-0.4, 0.2, -0.8);
+    const LineEstimate e = TriangulateLine(obs, init);
+    ASSERT_TRUE(e.valid);
+    EXPECT_LT(e.rms_px, 0.4);
+    const Segment3 truth{A, B};
+    // Distance of the estimated endpoints to the true line, and the extent.
+    for (const Eigen::Vector3d& p : {e.segment.a, e.segment.b}) {
+      worst = std::max(worst, truth.Distance(p));
+      sum2 += truth.Distance(p) * truth.Distance(p);
+      ++n;
+    }
+    EXPECT_LT(std::min((e.segment.a - A).norm(), (e.segment.b - A).norm()), 0.25);
+    EXPECT_LT(std::min((e.segment.a - B).norm(), (e.segment.b - B).norm()), 0.25);
+  }
+  // 0.2 px at 10 cm GSD with base/height 0.3-0.45 gives ~7 cm in height per
+  // view pair; the line through four views does better in the middle, worse
+  // at the extrapolated ends.
+  EXPECT_LT(std::sqrt(sum2 / n), 0.08);
+  EXPECT_LT(worst, 0.2);
+}
+
+TEST(Assignment, PicksTheConsistentOneToOneSet) {
+  // Segment (0,0) likes (1,0) best, (0,1) can only go with (1,0) weakly, and
+  // (0,0)-(1,1) is the alternative: the one-to-one rule keeps each segment once.
+  std::vector<AssignmentItem> items(4);
+  items[0] = {{{0, 0}, {1, 0}}, 0.9};
+  items[1] = {{{0, 1}, {1, 0}}, 0.5};
+  items[2] = {{{0, 0}, {1, 1}}, 0.7};
+  items[3] = {{{0, 1}, {1, 2}, {2, 5}}, 0.4};
+  const auto a = AssignOneToOne(items);
+  EXPECT_FALSE(a[0].empty());
+  EXPECT_TRUE(a[1].empty());  // (1,0) already taken by the better hypothesis
+  EXPECT_TRUE(a[2].empty());  // (0,0) taken
+  ASSERT_EQ(a[3].size(), 3u); // (0,1) goes to its remaining partner, with support
+  // Symmetric: reversing the roles of the views gives the same pairs.
+  std::vector<AssignmentItem> rev = items;
+  for (auto& it : rev) std::swap(it.keys[0], it.keys[1]);
+  const auto b = AssignOneToOne(rev);
+  for (size_t k = 0; k < items.size(); ++k) EXPECT_EQ(a[k].empty(), b[k].empty());
+}
+
+}  // namespace
+}  // namespace roofsweep

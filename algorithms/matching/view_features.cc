@@ -1,0 +1,170 @@
+#include "algorithms/matching/view_features.h"
+#include <Eigen/Geometry>
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "algorithms/core/error.h"
+#include "algorithms/matching/robust_estimate.h"
+
+namespace roofsweep {
+
+Eigen::Vector2d ViewFeatures::ToImage(const Eigen::Vector2d& ideal_px) const {
+  if (!camera->HasDistortion()) return ideal_px;
+  const Eigen::Vector3d n = camera->K().inverse() * ideal_px.homogeneous();
+  return camera->NormalizedToPixel(n.hnormalized());
+}
+
+Eigen::Vector2d ViewFeatures::ToIdeal(const Eigen::Vector2d& image_px) const {
+  if (!camera->HasDistortion()) return image_px;
+  const Eigen::Vector2d n = camera->PixelToNormalized(image_px);
+  return (camera->K() * n.homogeneous()).hnormalized();
+}
+
+bool SampleBilinear(const cv::Mat& image, const Eigen::Vector2d& p, float* out) {
+  // Pixel centres are at +0.5 (corner convention).
+  const double x = p.x() - 0.5, y = p.y() - 0.5;
+  if (!(x >= 0 && y >= 0 && x < image.cols - 1 && y < image.rows - 1)) return false;
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  const int ch = image.channels();
+  const float* r0 = image.ptr<float>(y0) + x0 * ch;
+  const float* r1 = image.ptr<float>(y0 + 1) + x0 * ch;
+  for (int c = 0; c < ch; ++c) {
+    const float top = r0[c] + fx * (r0[ch + c] - r0[c]);
+    const float bot = r1[c] + fx * (r1[ch + c] - r1[c]);
+    out[c] = top + fy * (bot - top);
+  }
+  return true;
+}
+
+std::vector<Eigen::Vector2d> FlankingRegion(const cv::Mat& labels, const Segment2D& s, int id,
+                                            int side, double offset, double width) {
+  std::vector<Eigen::Vector2d> out;
+  const double len = s.Length();
+  if (len < 1) return out;
+  const Eigen::Vector2d d = s.Direction();
+  const Eigen::Vector2d n = s.LeftNormal() * static_cast<double>(side);
+  const int cols = static_cast<int>(std::floor(len)) + 1;
+  const int rows = std::max(1, static_cast<int>(std::lround(width)));
+  auto pos = [&](int i, int j) {
+    return Eigen::Vector2d(s.p0 + (std::min<double>(i, len)) * d + (offset + j + 0.5) * n);
+  };
+  auto contour = [&](int i, int j) {
+    const Eigen::Vector2d p = pos(i, j);
+    const int x = static_cast<int>(std::floor(p.x())), y = static_cast<int>(std::floor(p.y()));
+    if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return true;
+    const int l = labels.at<int>(y, x);
+    return l >= 0 && l != id;
+  };
+  std::vector<char> prev(cols, 1), cur(cols, 0);
+  for (int j = 0; j < rows; ++j) {
+    bool any = false;
+    for (int i = 0; i < cols; ++i) {
+      bool ok = j == 0 || ((i == 0 || prev[i - 1]) && prev[i] && (i + 1 >= cols || prev[i + 1]));
+      // Stop one cell before a neighbouring contour (the offset again).
+      ok = ok && !contour(i, j) && !contour(i, j + 1);
+      cur[i] = ok;
+      if (ok) {
+        out.push_back(pos(i, j));
+        any = true;
+      }
+    }
+    if (!any) break;
+    std::swap(prev, cur);
+  }
+  return out;
+}
+
+SideColour RegionColour(const cv::Mat& lab, const std::vector<Eigen::Vector2d>& pixels,
+                        const MatchOptions& options, unsigned seed) {
+  SideColour sc;
+  std::vector<Eigen::Vector3f> v;
+  v.reserve(pixels.size());
+  for (const Eigen::Vector2d& p : pixels) {
+    const int x = static_cast<int>(std::floor(p.x())), y = static_cast<int>(std::floor(p.y()));
+    if (x < 0 || y < 0 || x >= lab.cols || y >= lab.rows) continue;
+    const cv::Vec3f c = lab.at<cv::Vec3f>(y, x);
+    v.emplace_back(c[0], c[1], c[2]);
+  }
+  if (static_cast<int>(v.size()) < options.min_region_pixels) return sc;
+  std::vector<double> l(v.size());
+  for (size_t i = 0; i < v.size(); ++i) l[i] = v[i].x();
+  const Robust1D rl = RobustMcd1D(l);
+  // L* noise floor: 8-bit quantisation alone is ~0.2 L*.
+  const double scale = std::max(rl.scale, 0.5);
+  std::vector<Eigen::Vector2d> ab;
+  for (const Eigen::Vector3f& c : v)
+    if (std::abs(c.x() - rl.location) <= options.l_outlier_sigmas * scale)
+      ab.emplace_back(c.y(), c.z());
+  if (static_cast<int>(ab.size()) < options.min_region_pixels) return sc;
+  const Robust2D r = RobustMcd2D(ab, seed);
+  if (!r.valid) return sc;
+  sc.valid = true;
+  sc.n = r.inliers;
+  sc.mean = r.mean;
+  // Floor of the chroma scatter (quantisation, flat synthetic regions):
+  // differences below ~0.3 a*/b* units are not colour differences.
+  sc.cov = r.cov + Eigen::Matrix2d::Identity() * 0.09;
+  sc.l_location = rl.location;
+  sc.l_scale = scale;
+  return sc;
+}
+
+ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Segments2D segments,
+                         const MatchOptions& options) {
+  if (image.empty() || (image.type() != CV_32FC3 && image.type() != CV_32FC1))
+    throw Error("match: image of view " + block.views.at(view).name +
+                " must be CV_32FC3 or CV_32FC1");
+  ViewFeatures f;
+  f.view = view;
+  const View& v = block.views.at(view);
+  f.camera = &block.CameraOf(v);
+  f.pose = v.pose;
+  f.P = ProjectionMatrix(*f.camera, v.pose);
+  cv::Mat rgb;
+  if (image.channels() == 1) {
+    cv::cvtColor(image, rgb, cv::COLOR_GRAY2RGB);
+  } else {
+    rgb = image;
+  }
+  cv::Mat clipped;
+  cv::min(cv::max(rgb, 0.0), 1.0, clipped);
+  cv::cvtColor(clipped, f.lab, cv::COLOR_RGB2Lab);
+  {
+    cv::Mat ch[3];
+    cv::split(f.lab, ch);
+    double amin, amax, bmin, bmax;
+    cv::minMaxLoc(ch[1], &amin, &amax);
+    cv::minMaxLoc(ch[2], &bmin, &bmax);
+    f.grey = std::max({std::abs(amin), amax, std::abs(bmin), bmax}) < 0.5;
+    cv::Mat gx, gy, l;
+    cv::GaussianBlur(ch[0], l, cv::Size(0, 0), 1.0);
+    cv::Sobel(l, gx, CV_32F, 1, 0, 3, 1.0 / 800.0);  // 1/8 Sobel norm, 1/100 L* range
+    cv::Sobel(l, gy, CV_32F, 0, 1, 3, 1.0 / 800.0);
+    cv::magnitude(gx, gy, f.gradient);
+  }
+  f.labels = RasterizeSegments(segments, f.lab.size());
+  f.segments = std::move(segments);
+  f.ideal = f.segments;
+  for (Segment2D& s : f.ideal) {
+    s.p0 = f.ToIdeal(s.p0);
+    s.p1 = f.ToIdeal(s.p1);
+  }
+  f.index = std::make_unique<SegmentIndex>(f.ideal);
+  f.sides.resize(f.segments.size());
+  for (size_t i = 0; i < f.segments.size(); ++i) {
+    if (f.segments[i].Length() < options.min_length) continue;
+    for (int k = 0; k < 2; ++k) {
+      const auto px = FlankingRegion(f.labels, f.segments[i], static_cast<int>(i), k == 0 ? 1 : -1,
+                                     options.region_offset, options.region_width);
+      f.sides[i][k] = RegionColour(f.lab, px, options,
+                                   options.seed * 7919u + static_cast<unsigned>(i * 2 + k));
+    }
+  }
+  return f;
+}
+
+}  // namespace roofsweep

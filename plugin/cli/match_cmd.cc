@@ -1,0 +1,39 @@
+#include <iostream>
+
+#include "plugin/cli/arg_parser.h"
+#include "plugin/cli/command.h"
+#include "plugin/cli/match_lib.h"
+
+namespace roofsweep::cli {
+namespace {
+
+int Match(const std::vector<std::string>& args, Context& ctx) {
+  MatchRequest r;
+  ArgParser p("match",
+              "Matches straight colour edge segments across the views of a block and writes 3D "
+              "lines (Scholze et al. 2000): geometric, chromatic and correlation tests, "
+              "verification in the other views, one-to-one assignment, least-squares lines.");
+  p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
+      .Option("-o", &r.output, "FILE", "output with a LineStringZ layer lines3d (.gpkg, .fgb, ...)")
+      .Option("-of|-f", &r.format, "FORMAT", "GDAL vector driver, when the extension does not tell")
+      .Flag("-overwrite", &r.overwrite, "replace an existing output file")
+      .Option("-truth", &r.truth, "FILE",
+              "groundtruth_edges.json of `roofsweep simulate`: true-pair counts and line scores")
+      .Example("roofsweep match out/block -o lines3d.gpkg")
+      .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
+  if (!p.Parse(args)) return 0;
+  const MatchSummary s = RunMatch(r, *ctx.progress);
+  if (!ctx.quiet) {
+    std::cout << FormatMatchSummary(s);
+    std::cout << "Wrote " << r.output << ": " << s.result.lines.size() << " 3D lines\n";
+  } else {
+    for (const std::string& m : s.result.messages) std::cerr << m << "\n";
+  }
+  return 0;
+}
+
+const CommandRegistration kRegistration{
+    {"match", "match edge segments across views and write 3D lines", Match}};
+
+}  // namespace
+}  // namespace roofsweep::cli

@@ -1,0 +1,124 @@
+#include "plugin/cli/match_lib.h"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "algorithms/core/error.h"
+#include "algorithms/eval/line_eval.h"
+#include "io/citymodel/ogr_citymodel.h"
+#include "io/citymodel/segments_json.h"
+#include "io/core/block_manifest.h"
+#include "io/core/image_io.h"
+#include "io/core/local_frame.h"
+#include "io/orientation/block_source.h"
+
+namespace roofsweep {
+namespace {
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string Hex(const Eigen::Vector3f& c) {
+  char buf[8];
+  auto b = [](float v) { return static_cast<int>(std::lround(std::clamp(v, 0.f, 1.f) * 255)); };
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", b(c.x()), b(c.y()), b(c.z()));
+  return buf;
+}
+
+bool IsRoofKind(const std::string& k) {
+  return k == "ridge" || k == "hip" || k == "valley" || k == "break" || k == "eave" ||
+         k == "verge" || k == "wall_top" || k == "step" || k == "party" || k == "roof_other";
+}
+
+}  // namespace
+
+MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
+  MatchSummary out;
+  if (r.output.empty()) throw Error("match: no output file given (-o)");
+  auto t0 = std::chrono::steady_clock::now();
+  const BlockManifest manifest = OpenBlockManifest(r.block);
+  const Block block = ManifestToBlock(manifest);
+  const LocalFrame frame = ManifestLocalFrame(manifest);
+  std::vector<cv::Mat> images(block.views.size());
+  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
+    images[v] = ReadImage(block.views[v].image_path);
+  });
+  out.read_s = Since(t0);
+
+  std::vector<Segment3> truth_local;
+  SegmentSet truth;
+  if (!r.truth.empty()) {
+    truth = ReadSegmentsJson(r.truth);
+    for (const LabelledSegment& s : truth.segments)
+      truth_local.push_back({frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)});
+  }
+  SubProgress sub(progress, 0.0, 0.95);
+  out.result = MatchLines(block, images, r.match, r.edges, sub,
+                          r.truth.empty() ? nullptr : &truth_local);
+
+  if (!r.truth.empty()) {
+    std::vector<Segment3> lines, roof, extra;
+    for (const Line3D& l : out.result.lines) lines.push_back(l.segment);
+    for (size_t k = 0; k < truth.segments.size(); ++k)
+      (IsRoofKind(truth.segments[k].kind) ? roof : extra).push_back(truth_local[k]);
+    const eval::LineScores s = eval::EvaluateLines(lines, roof, extra, eval::LineEvalOptions{});
+    if (s.result_length_m > 0) out.precision = s.result_on_reference_m / s.result_length_m;
+    if (s.reference_length_m > 0) out.completeness = s.reference_covered_m / s.reference_length_m;
+    if (s.roof_edge_length_m > 0)
+      out.roof_edge_completeness = s.roof_edge_covered_m / s.roof_edge_length_m;
+  }
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<LayerFeature> features;
+  for (const Line3D& l : out.result.lines) {
+    LayerFeature f;
+    f.lines.push_back({frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)});
+    f.integers["views"] = l.Views();
+    f.reals["rms_px"] = l.rms_px;
+    f.reals["length_m"] = l.segment.Length();
+    f.strings["colour_left"] = Hex(l.colour_left);
+    f.strings["colour_right"] = Hex(l.colour_right);
+    std::string obs;
+    for (const auto& [v, s] : l.observations)
+      obs += (obs.empty() ? "" : " ") + block.views[v].name + ":" + std::to_string(s);
+    f.strings["observations"] = obs;
+    features.push_back(std::move(f));
+  }
+  FeatureLayerOptions lo;
+  lo.driver = r.format;
+  lo.crs = manifest.crs;
+  lo.overwrite = r.overwrite;
+  WriteFeatureLayer(r.output, "lines3d", LayerGeometry::kLineStringZ, features, lo);
+  out.write_s = Since(t0);
+  progress.Update(1.0, "done");
+  return out;
+}
+
+std::string FormatMatchSummary(const MatchSummary& s) {
+  std::ostringstream o;
+  for (const std::string& m : s.result.messages) o << m << "\n";
+  o << FormatFunnel(s.result.funnel);
+  const MatchTimings& t = s.result.timings;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "Time (s): read %.2f, edges %.2f, flanking regions %.2f, candidates+chromatic+"
+                "correlation %.2f, verification %.2f, assignment %.2f, 3D %.2f, write %.2f\n",
+                s.read_s, t.edges_s, t.features_s, t.candidates_s, t.verify_s, t.assign_s,
+                t.triangulate_s, s.write_s);
+  o << buf;
+  if (s.precision || s.completeness) {
+    auto pct = [](const std::optional<double>& v) { return v ? 100.0 * *v : -1.0; };
+    std::snprintf(buf, sizeof buf,
+                  "Against the truth (10 cm, 10 deg, length-based): precision %.1f%%, "
+                  "completeness %.1f%%, roof-edge completeness %.1f%%\n",
+                  pct(s.precision), pct(s.completeness), pct(s.roof_edge_completeness));
+    o << buf;
+  }
+  return o.str();
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "algorithms/core/progress.h"
+#include "algorithms/edges/edge_options.h"
+#include "algorithms/matching/match_lines.h"
+#include "algorithms/matching/match_options.h"
+
+namespace roofsweep {
+
+struct MatchRequest {
+  std::string block;   // anything OpenBlockManifest accepts
+  std::string output;  // lines3d layer file (.gpkg, .fgb, ...)
+  std::string format;  // GDAL driver; empty: from the extension
+  bool overwrite = false;
+  // Optional ground truth (groundtruth_edges.json of `roofsweep simulate`):
+  // adds the true-pair counts to the funnel and scores the lines.
+  std::string truth;
+  MatchOptions match;
+  EdgeOptions edges;
+};
+
+struct MatchSummary {
+  MatchResult result;
+  double read_s = 0, write_s = 0;
+  // With truth: length-based scores within 10 cm / 10 degrees.
+  std::optional<double> precision, completeness, roof_edge_completeness;
+};
+
+// `roofsweep match`: reads the block and its images, extracts segments,
+// matches them and writes the 3D lines as a LineStringZ layer "lines3d" in
+// the block's CRS (fields: views, rms_px, length_m, colour_left,
+// colour_right). An empty result is written as an empty layer.
+MatchSummary RunMatch(const MatchRequest& request, Progress& progress);
+
+std::string FormatMatchSummary(const MatchSummary& summary);
+
+}  // namespace roofsweep
