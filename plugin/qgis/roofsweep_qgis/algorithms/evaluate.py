@@ -1,0 +1,63 @@
+"""Evaluate against ground truth: roofsweep eval."""
+
+import json
+
+from qgis.core import (QgsProcessingException, QgsProcessingOutputNumber, QgsProcessingParameterFile,
+                       QgsProcessingParameterFileDestination, QgsProcessingParameterNumber)
+
+from .base import RoofsweepAlgorithm
+
+
+class EvaluateAlgorithm(RoofsweepAlgorithm):
+    COMMAND = "eval"
+    NAME = "eval"
+    DISPLAY = "Evaluate against ground truth"
+    HELP = ("Scores a LoD2 reconstruction against ground truth like the ISPRS benchmark (roof plane "
+            "completeness, correctness and quality, normal-angle, vertex and height errors, buildings, roof "
+            "types, optionally 3D lines). The ground truth may be a model or the groundtruth.gml of a "
+            "simulation. Writes the report as JSON.")
+    USES_OPTIONS = ("--json", "-lines", "-png", "-gsd", "-overwrite")
+
+    RESULT = "RESULT"
+    GROUNDTRUTH = "GROUNDTRUTH"
+    LINES = "LINES"
+    GSD = "GSD"
+    OUTPUT = "OUTPUT"
+    PNG = "PNG"
+
+    def initAlgorithm(self, config=None):
+        self.addParameter(QgsProcessingParameterFile(self.RESULT, self.tr("Reconstructed model")))
+        self.addParameter(QgsProcessingParameterFile(self.GROUNDTRUTH, self.tr("Ground-truth model")))
+        self.addParameter(QgsProcessingParameterFile(self.LINES, self.tr("3D lines to score"), optional=True))
+        self.addParameter(QgsProcessingParameterNumber(self.GSD, self.tr("GSD for the vertex RMS in pixels (m)"),
+                                                       QgsProcessingParameterNumber.Double, None, True, 0.0))
+        self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Report (JSON)"),
+                                                                fileFilter="JSON (*.json)"))
+        self.addParameter(QgsProcessingParameterFileDestination(self.PNG, self.tr("Plan-view overlay"),
+                                                                fileFilter="PNG (*.png)", optional=True,
+                                                                createByDefault=False))
+
+    def processAlgorithm(self, parameters, context, feedback):
+        args = ["-q", "--json",
+                self.existing_file(self.parameterAsFile(parameters, self.RESULT, context), "Result"),
+                self.existing_file(self.parameterAsFile(parameters, self.GROUNDTRUTH, context), "Ground truth")]
+        if self.given(parameters, self.LINES):
+            args += ["-lines", self.existing_file(self.parameterAsFile(parameters, self.LINES, context), "Lines")]
+        if self.given(parameters, self.GSD):
+            args += ["-gsd", repr(self.parameterAsDouble(parameters, self.GSD, context))]
+        png = self.parameterAsFileOutput(parameters, self.PNG, context)
+        if png:
+            args += ["-png", png, "-overwrite"]
+        text = self.run_program(args, feedback, capture_stdout=True)
+        try:
+            report = json.loads(text)
+        except ValueError as e:
+            raise QgsProcessingException("roofsweep eval printed no JSON ({}): {}".format(e, text[:200]))
+        out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
+        with open(out, "w") as f:
+            json.dump(report, f, indent=2)
+        feedback.pushInfo(json.dumps(report, indent=2)[:4000])
+        result = {self.OUTPUT: out}
+        if png:
+            result[self.PNG] = png
+        return result

@@ -1,0 +1,243 @@
+"""Headless runs of the roofsweep algorithms through processing.run."""
+
+import json
+import os
+import subprocess
+import time
+
+import processing
+import pytest
+from qgis.core import QgsCoordinateReferenceSystem, QgsProcessingException, QgsVectorLayer, QgsWkbTypes
+
+from conftest import RecordingFeedback, has_command, shared_or_skip
+
+# The smallest block the simulator makes quickly (about 2 s): 2 nadir views
+# of 3 buildings on 512x512 pixel images.
+TINY = {"PRESET": 0, "SEED": 3, "SIZE": 512, "STRIPS": 1, "VIEWS": 2, "BUILDINGS": 3}
+CITYMODEL_LAYERS = ("buildings", "roof_surfaces", "wall_surfaces", "ground_surfaces")
+
+
+@pytest.fixture(scope="module")
+def tiny_block(tmp_path_factory, roofsweep_exe):
+    out = str(tmp_path_factory.mktemp("sim") / "block")
+    fb = RecordingFeedback()
+    res = processing.run("roofsweep:simulate", dict(TINY, OUTPUT=out), feedback=fb)
+    return res, fb
+
+
+def test_simulate_writes_block_and_reports_progress(tiny_block):
+    res, fb = tiny_block
+    assert os.path.isfile(res["BLOCK"])
+    assert os.path.isfile(res["GROUNDTRUTH"])
+    assert res["VIEW_COUNT"] == 2
+    assert res["BUILDING_COUNT"] == 3
+    with open(res["BLOCK"]) as f:
+        assert len(json.load(f)["images"]) == 2
+    # GDAL dots became progress: it rose through the run and ended at 100.
+    assert fb.progress_values and fb.progress_values[-1] == 100
+    assert len(set(fb.progress_values)) >= 10
+    assert fb.progress_values == sorted(fb.progress_values)
+    assert any(line.startswith("Wrote ") for line in fb.console), fb.console
+    assert not fb.errors
+
+
+def test_simulate_refuses_to_replace_a_foreign_folder(tmp_path):
+    keep = tmp_path / "mine.txt"
+    keep.write_text("precious")
+    with pytest.raises(QgsProcessingException, match="not empty"):
+        processing.run("roofsweep:simulate", dict(TINY, OUTPUT=str(tmp_path)), feedback=RecordingFeedback())
+    assert keep.read_text() == "precious"
+
+
+def _gpkg_layer_checks(path, layers):
+    counts = {}
+    for name in CITYMODEL_LAYERS:
+        uri = "{}|layername={}".format(path, name)
+        assert uri in layers
+        lyr = QgsVectorLayer(uri, name, "ogr")
+        assert lyr.isValid(), name
+        assert QgsWkbTypes.hasZ(lyr.wkbType()), name
+        assert QgsWkbTypes.geometryType(lyr.wkbType()) == QgsWkbTypes.PolygonGeometry, name
+        counts[name] = lyr.featureCount()
+        assert counts[name] > 0, name
+        for feat in lyr.getFeatures():
+            g = feat.geometry()
+            assert not g.isEmpty() and g.constGet().is3D()
+    return counts
+
+
+def _horizontal_epsg(crs):
+    """EPSG code of the horizontal part of a (possibly 3D) QGIS CRS, via OSR."""
+    from osgeo import osr
+
+    srs = osr.SpatialReference()
+    assert srs.ImportFromWkt(crs.toWkt(QgsCoordinateReferenceSystem.WKT2_2019)) == 0
+    if srs.GetAxesCount() == 3:
+        srs.DemoteTo2D()
+    matches = [m for m, confidence in (srs.FindMatches() or []) if confidence == 100]
+    if not matches:
+        return None, None
+    return matches[0].GetAuthorityName(None), matches[0].GetAuthorityCode(None)
+
+
+def test_convert_groundtruth_to_gpkg_loads_3d_polygon_layers(tiny_block, tmp_path):
+    res, _ = tiny_block
+    out = str(tmp_path / "gt.gpkg")
+    fb = RecordingFeedback()
+    conv = processing.run("roofsweep:convert", {"INPUT": res["GROUNDTRUTH"], "FORMAT": 0, "OUTPUT": out},
+                          feedback=fb)
+    assert conv["OUTPUT"] == out and os.path.isfile(out)
+    counts = _gpkg_layer_checks(out, conv["LAYERS"])
+    assert counts["buildings"] == 3
+    assert counts["ground_surfaces"] == 3
+    assert counts["roof_surfaces"] >= 3 and counts["wall_surfaces"] >= 12
+    for name in CITYMODEL_LAYERS:
+        crs = QgsVectorLayer("{}|layername={}".format(out, name), name, "ogr").crs()
+        assert crs.isValid()
+        assert _horizontal_epsg(crs) == ("EPSG", "25832"), crs.toWkt()
+        assert crs.mapUnits() == 0  # QgsUnitTypes.DistanceMeters
+    assert fb.progress_values and fb.progress_values[-1] == 100
+
+
+@pytest.mark.xfail(reason="roofsweep writes EPSG:25832 promoted to 3D (ellipsoidal height) as a custom "
+                          "GeoPackage SRS; QGIS 3.22 shows it as 'ETRS89 / UTM zone 32N' without an authid",
+                   strict=False)
+def test_convert_gpkg_crs_authid_is_epsg_25832(tiny_block, tmp_path):
+    res, _ = tiny_block
+    out = str(tmp_path / "gt.gpkg")
+    processing.run("roofsweep:convert", {"INPUT": res["GROUNDTRUTH"], "OUTPUT": out},
+                   feedback=RecordingFeedback())
+    crs = QgsVectorLayer(out + "|layername=roof_surfaces", "r", "ogr").crs()
+    assert crs.authid() == "EPSG:25832"
+
+
+def test_convert_to_cityjson_and_back(tiny_block, tmp_path):
+    res, _ = tiny_block
+    cj = str(tmp_path / "gt.city.json")
+    processing.run("roofsweep:convert", {"INPUT": res["GROUNDTRUTH"], "FORMAT": 3, "OUTPUT": cj},
+                   feedback=RecordingFeedback())
+    with open(cj) as f:
+        doc = json.load(f)
+    assert doc["type"] == "CityJSON"
+    assert sum(1 for o in doc["CityObjects"].values() if o["type"] == "Building") == 3
+    back = str(tmp_path / "back.gpkg")
+    conv = processing.run("roofsweep:convert", {"INPUT": cj, "OUTPUT": back}, feedback=RecordingFeedback())
+    assert _gpkg_layer_checks(back, conv["LAYERS"])["buildings"] == 3
+
+
+def test_failing_run_raises_with_the_error_line(tmp_path):
+    bad = tmp_path / "broken.gml"
+    bad.write_text("<core:CityModel xmlns:core='http://www.opengis.net/citygml/2.0'><oops></core:CityModel>")
+    out = tmp_path / "x.gpkg"
+    fb = RecordingFeedback()
+    with pytest.raises(QgsProcessingException) as e:
+        processing.run("roofsweep:convert", {"INPUT": str(bad), "OUTPUT": str(out)}, feedback=fb)
+    msg = str(e.value)
+    assert "roofsweep convert failed: ERROR" in msg and "broken.gml" in msg, msg
+    assert any(err.startswith("ERROR") for err in fb.errors), fb.errors
+    assert not out.exists()
+
+
+def test_missing_input_is_refused_before_running(tmp_path):
+    with pytest.raises(QgsProcessingException):
+        processing.run("roofsweep:convert", {"INPUT": str(tmp_path / "nope.gml"), "OUTPUT": str(tmp_path / "o.gpkg")},
+                       feedback=RecordingFeedback())
+
+
+def _roofsweep_children():
+    """Process ids of roofsweep programs started by this test process."""
+    me = str(os.getpid())
+    out = subprocess.run(["ps", "-o", "pid=,ppid=,comm=", "--ppid", me], stdout=subprocess.PIPE,
+                         universal_newlines=True).stdout
+    return [line.split()[0] for line in out.splitlines() if "roofsweep" in line]
+
+
+def test_cancel_terminates_the_program(tmp_path):
+    # The realistic preset renders 2048 px images: tens of seconds, so the
+    # cancel (at the first progress dot past 5 %) lands mid-run.
+    out = tmp_path / "cancelled"
+    fb = RecordingFeedback(cancel_at=5)
+    t0 = time.monotonic()
+    with pytest.raises(QgsProcessingException, match="cancelled"):
+        processing.run("roofsweep:simulate", {"PRESET": 1, "SEED": 1, "STRIPS": 1, "VIEWS": 3,
+                                              "OUTPUT": str(out)}, feedback=fb)
+    elapsed = time.monotonic() - t0
+    assert fb.isCanceled()
+    assert fb.progress_values and max(fb.progress_values) < 100
+    assert not out.exists(), "a cancelled simulation must not leave its output folder"
+    assert _roofsweep_children() == []
+    assert elapsed < 25, elapsed
+
+
+def test_import_and_info_on_ngi_block(shared_dir, tmp_path, roofsweep_exe):
+    ngi = shared_or_skip(shared_dir, "data/multiview/orthority-ngi-aerial")
+    with open(os.path.join(ngi, "ngi_xyz_opk.prj")) as f:
+        prj = f.read().strip()
+    crs = QgsCoordinateReferenceSystem.fromProj(prj) if prj.startswith("+") else \
+        QgsCoordinateReferenceSystem.fromWkt(prj)
+    assert crs.isValid(), prj
+    block = str(tmp_path / "ngi.json")
+    fb = RecordingFeedback()
+    res = processing.run("roofsweep:import", {
+        "FORMAT": 0, "SOURCE": os.path.join(ngi, "camera_pos_ori.txt"),
+        "CAMERA": os.path.join(ngi, "ngi_int_param.yaml"), "CRS": crs,
+        "DTM": os.path.join(ngi, "dem.tif"), "OUTPUT": block}, feedback=fb)
+    assert res["OUTPUT"] == block and os.path.isfile(block)
+    with open(block) as f:
+        manifest = json.load(f)
+    assert len(manifest["images"]) == 4
+
+    desc = str(tmp_path / "info.json")
+    info = processing.run("roofsweep:info", {"BLOCK": block, "OUTPUT": desc}, feedback=RecordingFeedback())
+    assert info["IMAGES"] == 4
+    # 120 mm lens, 0.144 mm pixels, ~4.5 km above a 150-780 m DEM: GSD ~5 m.
+    assert 3 < info["MEAN_GSD"] < 8, info["MEAN_GSD"]
+    with open(desc) as f:
+        assert len(json.load(f)["images"]) == 4
+
+
+def test_import_needs_exactly_one_source(tmp_path):
+    with pytest.raises(QgsProcessingException, match="exactly one"):
+        processing.run("roofsweep:import", {"FORMAT": 0, "OUTPUT": str(tmp_path / "b.json")},
+                       feedback=RecordingFeedback())
+
+
+def test_eval_groundtruth_against_itself(tiny_block, tmp_path, roofsweep_exe):
+    if not has_command(roofsweep_exe, "eval"):
+        pytest.skip("roofsweep eval is not available in this build ({})".format(roofsweep_exe))
+    res, _ = tiny_block
+    report = str(tmp_path / "eval.json")
+    out = processing.run("roofsweep:eval", {"RESULT": res["GROUNDTRUTH"], "GROUNDTRUTH": res["GROUNDTRUTH"],
+                                            "OUTPUT": report}, feedback=RecordingFeedback())
+    with open(out["OUTPUT"]) as f:
+        doc = json.load(f)
+    text = json.dumps(doc)
+    assert "completeness" in text, text[:500]
+
+
+@pytest.mark.parametrize("alg,command", [("roofsweep:lines", "lines"), ("roofsweep:match", "match"),
+                                         ("roofsweep:run", "run")])
+def test_missing_subcommand_fails_clearly(alg, command, roofsweep_exe, tmp_path, tiny_block):
+    if has_command(roofsweep_exe, command):
+        pytest.skip("roofsweep {} exists in this build; covered by its own test".format(command))
+    res, _ = tiny_block
+    params = {"BLOCK": res["BLOCK"], "OUTPUT": str(tmp_path / "out")}
+    if command == "match":
+        params["SEGMENTS"] = str(tmp_path)
+    with pytest.raises(QgsProcessingException, match="roofsweep {} is not available in this build".format(command)):
+        processing.run(alg, params, feedback=RecordingFeedback())
+
+
+def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path):
+    if not has_command(roofsweep_exe, "run"):
+        pytest.skip("roofsweep run is not available in this build ({}): the 'run' subcommand is missing, "
+                    "so Reconstruct LoD2 buildings cannot be tested".format(roofsweep_exe))
+    res, _ = tiny_block
+    out = str(tmp_path / "buildings.gpkg")
+    fb = RecordingFeedback()
+    rec = processing.run("roofsweep:run", {"BLOCK": res["BLOCK"], "OUTPUT": out}, feedback=fb)
+    assert os.path.isfile(out)
+    names = [u.split("layername=")[1] for u in rec["LAYERS"]]
+    assert "buildings" in names and "roof_surfaces" in names
+    lyr = QgsVectorLayer(out + "|layername=buildings", "b", "ogr")
+    assert lyr.isValid() and QgsWkbTypes.hasZ(lyr.wkbType()) and lyr.featureCount() > 0
