@@ -1,8 +1,12 @@
 #include "io/citymodel/segments_json.h"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <ogrsf_frmts.h>
 
 #include "algorithms/core/error.h"
 #include "io/citymodel/output_file.h"
@@ -68,6 +72,74 @@ SegmentSet ReadSegmentsJson(const std::string& path) {
     ls.kind = s.value("kind", "");
     ls.building = s.value("building", -1);
     set.segments.push_back(ls);
+  }
+  return set;
+}
+
+namespace {
+
+bool LooksLikeJson(const std::string& path) {
+  std::ifstream f(path);
+  char c = 0;
+  while (f.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+  }
+  return c == '{';
+}
+
+void AddLineString(const OGRLineString& ls, const std::string& kind, SegmentSet* set) {
+  for (int i = 0; i + 1 < ls.getNumPoints(); ++i) {
+    LabelledSegment s;
+    s.segment.a = {ls.getX(i), ls.getY(i), ls.getZ(i)};
+    s.segment.b = {ls.getX(i + 1), ls.getY(i + 1), ls.getZ(i + 1)};
+    s.kind = kind;
+    set->segments.push_back(s);
+  }
+}
+
+}  // namespace
+
+SegmentSet ReadSegments(const std::string& path, const std::string& layer_name) {
+  CheckInputFile(path);
+  if (LooksLikeJson(path)) {
+    // A GeoJSON file is JSON too; only roofsweep's own document says so.
+    std::ifstream f(path);
+    std::string text((std::istreambuf_iterator<char>(f)), {});
+    if (text.find("roofsweep_segments") != std::string::npos) return ReadSegmentsJson(path);
+  }
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!ds) throw Error(path + ": not a segments document nor a vector dataset GDAL can open");
+  OGRLayer* layer = nullptr;
+  if (!layer_name.empty()) {
+    layer = ds->GetLayerByName(layer_name.c_str());
+    if (!layer) throw Error(path + ": no layer '" + layer_name + "'");
+  } else {
+    layer = ds->GetLayerByName("lines3d");
+    for (int i = 0; !layer && i < ds->GetLayerCount(); ++i) {
+      const auto t = wkbFlatten(ds->GetLayer(i)->GetGeomType());
+      if (t == wkbLineString || t == wkbMultiLineString) layer = ds->GetLayer(i);
+    }
+    if (!layer) throw Error(path + ": no layer with line geometry");
+  }
+  SegmentSet set;
+  if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
+    const char* auth = srs->GetAuthorityName(nullptr);
+    const char* code = srs->GetAuthorityCode(nullptr);
+    if (auth && code) set.crs = std::string(auth) + ":" + code;
+  }
+  const int kind_field = layer->GetLayerDefn()->GetFieldIndex("kind");
+  layer->ResetReading();
+  for (auto& feature : *layer) {
+    const OGRGeometry* g = feature->GetGeometryRef();
+    if (!g) continue;
+    const std::string kind = kind_field >= 0 ? feature->GetFieldAsString(kind_field) : "";
+    const auto t = wkbFlatten(g->getGeometryType());
+    if (t == wkbLineString) {
+      AddLineString(*g->toLineString(), kind, &set);
+    } else if (t == wkbMultiLineString) {
+      for (const OGRLineString* part : *g->toMultiLineString()) AddLineString(*part, kind, &set);
+    }
   }
   return set;
 }

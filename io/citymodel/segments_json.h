@@ -28,4 +28,10 @@ void WriteSegmentsJson(const SegmentSet& set, const std::string& path, bool over
 // Errors name the file and the JSON pointer of the bad entry.
 SegmentSet ReadSegmentsJson(const std::string& path);
 
+// Reads 3D segments from a segments JSON document or, for anything else, an
+// OGR dataset: the layer `layer` (default: "lines3d", else the first layer
+// with line geometry); every LineString part becomes segments between its
+// consecutive vertices, `kind` from a "kind" field when present.
+SegmentSet ReadSegments(const std::string& path, const std::string& layer = {});
+
 }  // namespace roofsweep

@@ -11,7 +11,7 @@ namespace {
 int Simulate(const std::vector<std::string>& args, Context& ctx) {
   SimulateRequest r;
   int seed = 1;
-  std::string origin;
+  std::string origin, aoi;
   std::string presets;
   for (const auto& p : sim::SimulationPresetNames()) presets += (presets.empty() ? "" : ", ") + p;
   ArgParser p("simulate",
@@ -21,6 +21,8 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
       .Option("-seed|--seed", &seed, "N", "random seed; the same seed gives the same block (1)")
       .Option("-citygml|--citygml", &r.citygml, "FILE",
               "render this LoD2 model (CityGML, CityJSON, GPKG) instead of a generated scene")
+      .Option("-aoi", &aoi, "MINX,MINY,MAXX,MAXY",
+              "with -citygml: only buildings whose plan centre lies in this window (model CRS)")
       .Option("-o", &r.output_dir, "DIR", "output folder (required)")
       .Option("-a_srs", &r.crs, "SRS", "CRS to place a generated scene in (EPSG:25832)")
       .Option("-origin", &origin, "E,N,H",
@@ -47,6 +49,15 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
       throw UsageError("Option -origin expects E,N,H, got '" + origin + "'", p.Synopsis());
     }
     r.origin = Eigen::Vector3d(e, n, h);
+  }
+  if (!aoi.empty()) {
+    double a, b, c, d;
+    char tail;
+    if (std::sscanf(aoi.c_str(), "%lf,%lf,%lf,%lf%c", &a, &b, &c, &d, &tail) != 4 || a >= c ||
+        b >= d) {
+      throw UsageError("Option -aoi expects MINX,MINY,MAXX,MAXY, got '" + aoi + "'", p.Synopsis());
+    }
+    r.aoi = Eigen::Vector4d(a, b, c, d);
   }
   const SimulateSummary s = RunSimulate(r, *ctx.progress);
   if (!ctx.quiet) {

@@ -127,7 +127,26 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   CityModel input;
   if (!r.citygml.empty()) {
     input = ReadCityModel(r.citygml);
-    if (input.buildings.empty()) throw Error(r.citygml + ": no buildings to simulate");
+    if (r.aoi) {
+      const Eigen::Vector4d w = *r.aoi;
+      std::vector<Building> kept;
+      for (Building& b : input.buildings) {
+        Eigen::Vector2d c = Eigen::Vector2d::Zero();
+        int n = 0;
+        for (const Surface& s : b.surfaces)
+          for (const Polygon3& p : s.polygons)
+            for (const auto& v : p.exterior) c += v.head<2>(), ++n;
+        if (n == 0) continue;
+        c /= n;
+        if (c.x() >= w(0) && c.x() <= w(2) && c.y() >= w(1) && c.y() <= w(3)) {
+          kept.push_back(std::move(b));
+        }
+      }
+      input.buildings = std::move(kept);
+    }
+    if (input.buildings.empty()) {
+      throw Error(r.citygml + ": no buildings to simulate" + (r.aoi ? " inside -aoi" : ""));
+    }
     if (!input.crs.empty()) crs = input.crs;
     const auto b = input.Bounds();
     origin = Eigen::Vector3d((b(0) + b(3)) / 2, (b(1) + b(4)) / 2, b(2));

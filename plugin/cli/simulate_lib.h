@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "algorithms/core/progress.h"
@@ -13,6 +14,9 @@ struct SimulateRequest {
   std::string preset = "realistic";
   uint64_t seed = 1;
   std::string citygml;  // optional: a real LoD2 model to render (any format ReadCityModel reads)
+  // With citygml: keep only buildings whose plan centre lies in this window
+  // (min x, min y, max x, max y in the model's CRS).
+  std::optional<Eigen::Vector4d> aoi;
   // The block is placed in a real CRS so that every later stage works as on
   // real data: local ENU at `origin` (CRS coordinates, ellipsoidal height of
   // the ground). A model read from --citygml keeps its own CRS and place.

@@ -1,0 +1,47 @@
+#include <iostream>
+
+#include "plugin/cli/arg_parser.h"
+#include "plugin/cli/command.h"
+#include "plugin/cli/eval_lib.h"
+
+namespace roofsweep::cli {
+namespace {
+
+int Eval(const std::vector<std::string>& args, Context&) {
+  EvalRequest r;
+  bool json = false;
+  ArgParser p("eval",
+              "Scores a LoD2 reconstruction against ground truth like the ISPRS benchmark: roof "
+              "plane completeness/correctness/quality, normal-angle, vertex and height errors, "
+              "buildings, roof types, and 3D lines when given.");
+  p.Positional("RESULT", &r.result, "reconstructed model (CityGML, CityJSON, GPKG)")
+      .Positional("GROUNDTRUTH", &r.truth,
+                  "ground-truth model, or a folder written by roofsweep simulate")
+      .Flag("--json|-json", &json, "print one JSON object instead of the table")
+      .Option("-lines", &r.lines, "FILE", "3D lines to score (GPKG lines3d layer or segments JSON)")
+      .Option("-png", &r.png, "FILE", "write a plan-view overlay (ground truth vs result)")
+      .Option("-gsd", &r.options.gsd_m, "M", "GSD for the vertex RMS in pixels (from the simulation)")
+      .Option("-overlap", &r.options.plane_overlap_fraction, "F",
+              "plan-view overlap for a roof plane to count (0.5)")
+      .Option("-max_angle", &r.options.max_normal_angle_deg, "DEG",
+              "normal-angle agreement for a roof plane to count (10)")
+      .Option("-line_tolerance", &r.options.lines.distance_m, "M",
+              "distance for a 3D line to count (0.10)")
+      .Flag("-overwrite", &r.overwrite, "replace an existing -png file")
+      .Example("roofsweep eval out/buildings.gml out/block")
+      .Example("roofsweep eval buildings.gpkg groundtruth.gml -lines lines3d.gpkg --json");
+  if (!p.Parse(args)) return 0;
+  const EvalReport rep = RunEval(r);
+  if (json) {
+    std::cout << rep.json.dump(2) << "\n";
+  } else {
+    std::cout << rep.table;
+  }
+  return 0;
+}
+
+const CommandRegistration kRegistration{
+    {"eval", "score a reconstruction against ground truth (ISPRS-style table or JSON)", Eval}};
+
+}  // namespace
+}  // namespace roofsweep::cli

@@ -1,0 +1,107 @@
+#include "plugin/cli/eval_lib.h"
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgproc.hpp>
+
+#include "algorithms/core/error.h"
+#include "algorithms/eval/eval_report.h"
+#include "algorithms/eval/overlay.h"
+#include "io/citymodel/citymodel_io.h"
+#include "io/citymodel/output_file.h"
+#include "io/citymodel/segments_json.h"
+#include "io/core/image_io.h"
+
+namespace fs = std::filesystem;
+
+namespace roofsweep {
+namespace {
+
+// Coordinates of projected CRSs are large (5e6 m): the evaluator's plan
+// geometry works on coordinates relative to a common origin.
+void Shift(CityModel* m, const Eigen::Vector3d& o) {
+  for (Building& b : m->buildings)
+    for (Surface& s : b.surfaces)
+      for (Polygon3& p : s.polygons) {
+        for (auto& v : p.exterior) v -= o;
+        for (auto& h : p.holes)
+          for (auto& v : h) v -= o;
+      }
+}
+
+bool IsRoofKind(const std::string& kind) {
+  // The simulator's roof edge kinds (algorithms/simulate/scene_truth.h).
+  for (const char* k : {"ridge", "hip", "valley", "break", "eave", "verge", "wall_top", "step",
+                        "party", "roof_other"})
+    if (kind == k) return true;
+  return false;
+}
+
+void CheckSameCrs(const std::string& a, const std::string& what_a, const std::string& b,
+                  const std::string& what_b) {
+  if (!a.empty() && !b.empty() && a != b) {
+    throw Error(what_a + " is in " + a + " but " + what_b + " is in " + b +
+                "; convert one of them first");
+  }
+}
+
+}  // namespace
+
+EvalReport RunEval(const EvalRequest& r) {
+  std::string truth_path = r.truth, edges_path;
+  EvalOptions options = r.options;
+  if (fs::is_directory(r.truth)) {
+    truth_path = (fs::path(r.truth) / "groundtruth.gml").string();
+    if (!fs::exists(truth_path)) {
+      throw Error(r.truth + ": no groundtruth.gml (not a folder written by roofsweep simulate)");
+    }
+    const fs::path edges = fs::path(r.truth) / "groundtruth_edges.json";
+    if (fs::exists(edges)) edges_path = edges.string();
+    const fs::path meta = fs::path(r.truth) / "simulation.json";
+    if (options.gsd_m <= 0 && fs::exists(meta)) {
+      std::ifstream f(meta);
+      const auto j = nlohmann::json::parse(f, nullptr, false);
+      if (j.is_object() && j.contains("gsd_m")) options.gsd_m = j["gsd_m"].get<double>();
+    }
+  }
+  if (!r.png.empty()) CheckOutputPath(r.png, r.overwrite);
+
+  CityModel result = ReadCityModel(r.result);
+  CityModel truth = ReadCityModel(truth_path);
+  CheckSameCrs(result.crs, r.result, truth.crs, truth_path);
+  if (truth.buildings.empty()) throw Error(truth_path + ": the ground truth has no buildings");
+
+  const auto bounds = truth.Bounds();
+  const Eigen::Vector3d origin(std::floor(bounds(0)), std::floor(bounds(1)), 0.0);
+  Shift(&result, origin);
+  Shift(&truth, origin);
+
+  std::vector<Segment3> lines, extra;
+  if (!r.lines.empty()) {
+    const SegmentSet set = ReadSegments(r.lines);
+    CheckSameCrs(set.crs, r.lines, truth.crs, truth_path);
+    for (const auto& s : set.segments) lines.push_back({s.segment.a - origin, s.segment.b - origin});
+  }
+  if (!edges_path.empty()) {
+    // Wall edges and ground markings are true scene edges too: a 3D line on
+    // them is correct, though it completes no roof edge.
+    for (const auto& s : ReadSegmentsJson(edges_path).segments) {
+      if (!IsRoofKind(s.kind)) extra.push_back({s.segment.a - origin, s.segment.b - origin});
+    }
+  }
+
+  EvalReport report;
+  report.result = Evaluate(result, truth, options, r.lines.empty() ? nullptr : &lines,
+                           extra.empty() ? nullptr : &extra);
+  report.table = FormatTable(report.result);
+  report.json = ToJson(report.result);
+  report.json["inputs"] = {{"result", r.result}, {"truth", truth_path}};
+  if (!r.png.empty()) {
+    cv::Mat bgr = RenderOverlay(result, truth, report.result), rgb;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    WriteImage(r.png, rgb);
+  }
+  return report;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# roofsweep simulate / eval / convert: the yardstick's own checks.
+source "$(dirname "$0")/lib.sh"
+XSD_REL=schemas/citygml-2.0/CityGML-2.0-all.xsd
+
+# A small block: 2 views of 512 px over a few buildings.
+SIM="$WORK/sim"
+small_block() {
+  [[ -d "$SIM" ]] || "$RS" simulate -preset easy -seed 5 -size 512 -strips 1 -views 2 -buildings 4 -o "$SIM" -q
+}
+
+test_simulate_writes_a_readable_block() {
+  small_block || { fail simulate "exit $?"; return; }
+  for f in block.json groundtruth.gml groundtruth_edges.json simulation.json orientation/opk.txt orientation/camera.yaml; do
+    [[ -s "$SIM/$f" ]] || { fail "simulate_writes_$f" "missing"; return; }
+  done
+  pass simulate_writes_all_files
+  expect_ok info_on_simulated info "$SIM" --json || return
+  python3 -c "
+import json,sys; j=json.load(open(sys.argv[1])); sim=json.load(open(sys.argv[2]))
+assert len(j['images'])==2, j['images']
+assert j['crs']=='EPSG:25832'
+g=sim['gsd_m']  # nominal; attitude noise changes it slightly
+assert all(abs(i['gsd_m']-g)/g < 0.02 for i in j['images']), (g, [i['gsd_m'] for i in j['images']])
+assert j['overlaps'] and j['overlaps'][0]['fraction'] > 0.5" "$WORK/stdout.txt" "$SIM/simulation.json" \
+    && pass simulated_block_geometry || fail simulated_block_geometry "$(head -c 400 "$WORK/stdout.txt")"
+}
+
+test_simulate_is_deterministic() {
+  small_block || return
+  "$RS" simulate -preset easy -seed 5 -size 512 -strips 1 -views 2 -buildings 4 -o "$WORK/again" -q
+  if diff -r -q "$SIM/images" "$WORK/again/images" >/dev/null && cmp -s "$SIM/groundtruth.gml" "$WORK/again/groundtruth.gml" &&
+    cmp -s "$SIM/block.json" "$WORK/again/block.json"; then
+    pass same_seed_same_bytes
+  else
+    fail same_seed_same_bytes "images or ground truth differ"
+  fi
+}
+
+test_groundtruth_validates_against_citygml_xsd() {
+  small_block || return
+  local xsd
+  xsd=$(shared_or_skip "$XSD_REL")
+  [[ -n "$xsd" ]] || return
+  if xmllint --noout --nonet --schema "$xsd" "$SIM/groundtruth.gml" 2>"$WORK/xml.txt"; then
+    pass groundtruth_xsd_valid
+  else
+    fail groundtruth_xsd_valid "$(tail -3 "$WORK/xml.txt")"
+  fi
+}
+
+test_eval_of_truth_against_itself_is_perfect() {
+  small_block || return
+  expect_ok eval_self eval "$SIM/groundtruth.gml" "$SIM" --json -lines "$SIM/groundtruth_edges.json" || return
+  python3 -c "
+import json,sys; j=json.load(open(sys.argv[1]))
+rp=j['roof_planes']; g=j['geometry']; b=j['buildings']; l=j['lines3d']
+assert rp['completeness']==1 and rp['correctness']==1 and rp['quality']==1, rp
+assert g['angle_median_deg'] < 1e-6 and g['vertex_rms_m'] < 1e-6 and g['rmsz_m'] < 1e-6, g
+assert b['completeness']==1 and b['correctness']==1, b
+assert l['precision']==1 and l['roof_edge_completeness']==1, l" "$WORK/stdout.txt" \
+    && pass eval_self_perfect || fail eval_self_perfect "$(head -c 600 "$WORK/stdout.txt")"
+}
+
+test_eval_against_empty_model() {
+  small_block || return
+  cat >"$WORK/empty.city.json" <<'J'
+{"type": "CityJSON", "version": "2.0", "transform": {"scale": [0.001, 0.001, 0.001], "translate": [0, 0, 0]},
+ "metadata": {"referenceSystem": "https://www.opengis.net/def/crs/EPSG/0/25832"}, "CityObjects": {}, "vertices": []}
+J
+  expect_ok eval_empty eval "$WORK/empty.city.json" "$SIM" --json || return
+  python3 -c "
+import json,sys; j=json.load(open(sys.argv[1]))
+assert j['roof_planes']['completeness']==0, j['roof_planes']
+assert j['buildings']['completeness']==0, j['buildings']" "$WORK/stdout.txt" \
+    && pass eval_empty_zero || fail eval_empty_zero "$(head -c 400 "$WORK/stdout.txt")"
+}
+
+test_convert_round_trip_keeps_scores() {
+  small_block || return
+  expect_ok to_cityjson convert "$SIM/groundtruth.gml" "$WORK/gt.city.json" -q || return
+  expect_ok to_gpkg convert "$WORK/gt.city.json" "$WORK/gt.gpkg" -q || return
+  expect_ok to_gml convert "$WORK/gt.gpkg" "$WORK/gt2.gml" -q || return
+  expect_ok eval_round_trip eval "$WORK/gt2.gml" "$SIM" --json || return
+  python3 -c "
+import json,sys; j=json.load(open(sys.argv[1]))
+assert j['roof_planes']['quality']==1 and j['geometry']['vertex_rms_m'] < 0.001, j['geometry']" "$WORK/stdout.txt" \
+    && pass round_trip_within_1mm || fail round_trip_within_1mm "$(head -c 400 "$WORK/stdout.txt")"
+  ogrinfo -ro -so "$WORK/gt.gpkg" roof_surfaces >"$WORK/ogr.txt" 2>&1
+  grep -q "Geometry: 3D Multi Polygon" "$WORK/ogr.txt" && grep -q 'ETRS89 / UTM zone 32N' "$WORK/ogr.txt" \
+    && pass gpkg_3d_with_crs || fail gpkg_3d_with_crs "$(head -c 600 "$WORK/ogr.txt")"
+  expect_fail convert_refuses_existing "" "exists" -- convert "$WORK/gt.city.json" "$WORK/gt.gpkg"
+}
+
+test_simulate_from_berlin_tile() {
+  local gml xsd
+  gml=$(shared_or_skip data/citygml/berlin-lod2/3910_5819.gml)
+  xsd=$(shared_or_skip "$XSD_REL")
+  [[ -n "$gml" && -n "$xsd" ]] || return
+  expect_ok simulate_berlin simulate -citygml "$gml" -aoi 391760,5818980,391900,5819110 -size 768 -o "$WORK/berlin" -q || return
+  xmllint --noout --nonet --schema "$xsd" "$WORK/berlin/groundtruth.gml" 2>/dev/null \
+    && pass berlin_truth_xsd_valid || fail berlin_truth_xsd_valid "xmllint"
+  grep -q 'srsName="EPSG:25833"' "$WORK/berlin/groundtruth.gml" && pass berlin_keeps_crs || fail berlin_keeps_crs "no EPSG:25833"
+  # The truth went CRS -> local ENU -> CRS: it must still sit on the source model.
+  expect_ok eval_berlin_vs_source eval "$WORK/berlin/groundtruth.gml" "$gml" --json || return
+  python3 -c "
+import json,sys; j=json.load(open(sys.argv[1]))
+assert j['roof_planes']['correctness']==1 and j['geometry']['vertex_rms_m'] < 0.001, (j['roof_planes'], j['geometry'])" "$WORK/stdout.txt" \
+    && pass berlin_truth_on_source || fail berlin_truth_on_source "$(head -c 400 "$WORK/stdout.txt")"
+}
+
+test_bad_input() {
+  expect_fail unknown_preset "$WORK/x" "preset" -- simulate -preset nonsense -o "$WORK/x"
+  expect_fail missing_citygml "$WORK/y" "nope.gml" -- simulate -citygml "$WORK/nope.gml" -o "$WORK/y"
+  small_block || return
+  expect_fail existing_folder "" "exists" -- simulate -preset easy -o "$SIM"
+  expect_fail eval_missing_truth "" "nothere" -- eval "$SIM/groundtruth.gml" "$WORK/nothere.gml"
+  printf '<?xml version="1.0"?>\n<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0"><core:cityObjectMember>' >"$WORK/trunc.gml"
+  expect_fail convert_truncated "$WORK/t.city.json" "trunc.gml" -- convert "$WORK/trunc.gml" "$WORK/t.city.json"
+}
+
+run_tests
