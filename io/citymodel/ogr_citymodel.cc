@@ -528,53 +528,49 @@ CityModel ReadOgrCityModel(const std::string& path) {
   return model;
 }
 
-void WriteFeatureLayer(const std::string& path, const std::string& layer_name,
-                       LayerGeometry geometry, const std::vector<LayerFeature>& features,
-                       const FeatureLayerOptions& options) {
-  const std::string driver = options.driver.empty() ? OgrDriverForPath(path) : options.driver;
-  if (driver.empty())
-    throw Error(AtLine(path, 0, "cannot tell the vector format from the extension; name it"));
-  GDALDriver* drv = WriteDriver(driver, path);
-  OutputFile file(path, options.overwrite || options.update);
-  auto srs = Make3dSrs(options.crs, path, !EQUAL(driver.c_str(), "GeoJSON"));
-  GDALDataset* ds = OpenOutput(drv, file, options.update);
-  struct Closer {
-    GDALDataset*& ds;
-    ~Closer() {
-      if (ds) GDALClose(ds);
-    }
-  } closer{ds};
-  QuietGdal quiet;
-  const OGRwkbGeometryType type = geometry == LayerGeometry::kLineStringZ ? wkbLineString25D
+namespace {
+
+void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerData& data,
+                   const std::string& description, OGRSpatialReference* srs) {
+  const std::string& layer_name = data.name;
+  const LayerGeometry geometry = data.geometry;
+  const OGRwkbGeometryType type = geometry == LayerGeometry::kLineStringZ  ? wkbLineString25D
+                                  : geometry == LayerGeometry::kLineString ? wkbLineString
                                   : geometry == LayerGeometry::kMultiLineStringZ
                                       ? wkbMultiLineString25D
                                   : geometry == LayerGeometry::kMultiPolygonZ ? wkbMultiPolygon25D
                                                                               : wkbNone;
-  OGRLayer* layer = CreateLayer(ds, layer_name, type, srs.get(), path);
+  OGRLayer* layer = CreateLayer(ds, layer_name, type, srs, path);
+  if (!description.empty()) layer->SetMetadataItem("DESCRIPTION", description.c_str());
   std::map<std::string, OGRFieldType> fields;
-  for (const auto& f : features) {
+  for (const auto& f : data.features) {
     for (const auto& kv : f.integers) fields.emplace(kv.first, OFTInteger64);
     for (const auto& kv : f.reals) fields.emplace(kv.first, OFTReal);
     for (const auto& kv : f.strings) fields.emplace(kv.first, OFTString);
   }
   for (const auto& [name, t] : fields) AddField(layer, name, t, path);
   const bool tx = ds->StartTransaction() == OGRERR_NONE;
-  for (size_t i = 0; i < features.size(); ++i) {
-    const LayerFeature& lf = features[i];
+  for (size_t i = 0; i < data.features.size(); ++i) {
+    const LayerFeature& lf = data.features[i];
     OGRFeature f(layer->GetLayerDefn());
     for (const auto& [k, v] : lf.integers) f.SetField(k.c_str(), static_cast<GIntBig>(v));
     for (const auto& [k, v] : lf.reals) f.SetField(k.c_str(), v);
     for (const auto& [k, v] : lf.strings) f.SetField(k.c_str(), v.c_str());
-    auto line = [](const std::vector<Eigen::Vector3d>& pts) {
+    auto line = [](const std::vector<Eigen::Vector3d>& pts, bool z) {
       auto* ls = new OGRLineString();
-      for (const auto& p : pts) ls->addPoint(p.x(), p.y(), p.z());
+      for (const auto& p : pts) {
+        if (z)
+          ls->addPoint(p.x(), p.y(), p.z());
+        else
+          ls->addPoint(p.x(), p.y());
+      }
       return ls;
     };
-    if (type == wkbLineString25D && !lf.lines.empty()) {
-      f.SetGeometryDirectly(line(lf.lines[0]));
+    if ((type == wkbLineString25D || type == wkbLineString) && !lf.lines.empty()) {
+      f.SetGeometryDirectly(line(lf.lines[0], type == wkbLineString25D));
     } else if (type == wkbMultiLineString25D) {
       auto* ml = new OGRMultiLineString();
-      for (const auto& l : lf.lines) ml->addGeometryDirectly(line(l));
+      for (const auto& l : lf.lines) ml->addGeometryDirectly(line(l, true));
       f.SetGeometryDirectly(ml);
     } else if (type == wkbMultiPolygon25D) {
       std::vector<const Polygon3*> polys;
@@ -588,12 +584,49 @@ void WriteFeatureLayer(const std::string& path, const std::string& layer_name,
   }
   if (tx && ds->CommitTransaction() != OGRERR_NONE)
     throw Error(AtLine(path, 0, "commit failed" + QuietGdal::Last()));
+}
+
+}  // namespace
+
+void WriteFeatureLayers(const std::string& path, const std::vector<FeatureLayerData>& layers,
+                        const FeatureLayerOptions& options) {
+  const std::string driver = options.driver.empty() ? OgrDriverForPath(path) : options.driver;
+  if (driver.empty())
+    throw Error(AtLine(path, 0, "cannot tell the vector format from the extension; name it"));
+  GDALDriver* drv = WriteDriver(driver, path);
+  if (layers.size() > 1 && !IsMultiLayer(driver))
+    throw Error(AtLine(path, 0,
+                       "format " + driver + " holds one layer; " + std::to_string(layers.size()) +
+                           " needed (use .gpkg)"));
+  OutputFile file(path, options.overwrite || options.update);
+  auto srs = Make3dSrs(options.crs, path, !EQUAL(driver.c_str(), "GeoJSON"));
+  GDALDataset* ds = OpenOutput(drv, file, options.update);
+  struct Closer {
+    GDALDataset*& ds;
+    ~Closer() {
+      if (ds) GDALClose(ds);
+    }
+  } closer{ds};
+  QuietGdal quiet;
+  for (const FeatureLayerData& l : layers)
+    WriteOneLayer(ds, path, l, l.description.empty() ? options.description : l.description,
+                  srs.get());
   CPLErrorReset();
   GDALClose(ds);
   ds = nullptr;
   if (CPLGetLastErrorType() >= CE_Failure)
     throw Error(AtLine(path, 0, "writing failed on close" + QuietGdal::Last()));
   file.Commit();
+}
+
+void WriteFeatureLayer(const std::string& path, const std::string& layer_name,
+                       LayerGeometry geometry, const std::vector<LayerFeature>& features,
+                       const FeatureLayerOptions& options) {
+  FeatureLayerData data;
+  data.name = layer_name;
+  data.geometry = geometry;
+  data.features = features;
+  WriteFeatureLayers(path, {data}, options);
 }
 
 }  // namespace roofsweep

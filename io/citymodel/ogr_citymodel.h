@@ -77,7 +77,8 @@ bool IsOgrVectorWriteDriver(const std::string& name);
 
 // ---- Extra layers (lines3d, half planes, ...) ------------------------------
 
-enum class LayerGeometry { kNone, kLineStringZ, kMultiLineStringZ, kMultiPolygonZ };
+// kLineString is 2D (x, y of lines[0]; image pixel layers have no z).
+enum class LayerGeometry { kNone, kLineStringZ, kMultiLineStringZ, kMultiPolygonZ, kLineString };
 
 // One feature for WriteFeatureLayer: geometry by kind, attributes by type.
 struct LayerFeature {
@@ -95,6 +96,9 @@ struct FeatureLayerOptions {
   // or replaces this layer in an existing file (copy, change, rename).
   bool overwrite = false;
   bool update = false;
+  // Layer description (GPKG gpkg_contents.description, DESCRIPTION metadata
+  // elsewhere); empty: none.
+  std::string description;
 };
 
 // Writes `features` as layer `layer` (fields are the union of the features'
@@ -102,5 +106,16 @@ struct FeatureLayerOptions {
 void WriteFeatureLayer(const std::string& path, const std::string& layer, LayerGeometry geometry,
                        const std::vector<LayerFeature>& features,
                        const FeatureLayerOptions& options);
+
+// Several layers in one atomic write (one copy of the file, not one per
+// layer). Each layer's description overrides options.description.
+struct FeatureLayerData {
+  std::string name;
+  LayerGeometry geometry = LayerGeometry::kNone;
+  std::string description;
+  std::vector<LayerFeature> features;
+};
+void WriteFeatureLayers(const std::string& path, const std::vector<FeatureLayerData>& layers,
+                        const FeatureLayerOptions& options);
 
 }  // namespace roofsweep

@@ -1,0 +1,54 @@
+#include <cstdio>
+#include <iostream>
+
+#include "plugin/cli/arg_parser.h"
+#include "plugin/cli/command.h"
+#include "plugin/cli/lines_lib.h"
+
+namespace roofsweep::cli {
+namespace {
+
+int Lines(const std::vector<std::string>& args, Context& ctx) {
+  LinesRequest r;
+  std::string method = "max";
+  double min_length = r.edges.min_length;
+  ArgParser p("lines",
+              "Extracts straight colour edge segments (Scholze et al. 2000) from every image of a "
+              "block and writes one LineString layer per image (lines_<image stem>) in image "
+              "pixel coordinates: x right, y down, origin at the top-left corner of the "
+              "top-left pixel; no CRS.");
+  p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
+      .Option("-o", &r.output, "FILE", "output vector file, one layer per image (required)")
+      .Option("-of", &r.format, "FMT", "GDAL vector driver (from the extension; GPKG for .gpkg)")
+      .Option("-method|--method", &method, "max|dizenzo|grey",
+              "gradient fusion of the colour bands (max)")
+      .Option("-min-length|--min-length", &min_length, "PX", "shortest segment kept (15)")
+      .Option("-png|--png", &r.png_dir, "DIR", "also write <layer>.png overlays into DIR")
+      .Flag("-overwrite|--overwrite", &r.overwrite, "replace an existing output file")
+      .Example("roofsweep lines out/block -o lines.gpkg -png out/overlays")
+      .Example("roofsweep lines vgg:merton1 -o merton_lines.gpkg --method dizenzo");
+  if (!p.Parse(args)) return 0;
+  if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());
+  if (method == "max") {
+    r.edges.method = GradientMethod::kMax;
+  } else if (method == "dizenzo") {
+    r.edges.method = GradientMethod::kDiZenzo;
+  } else if (method == "grey") {
+    r.edges.method = GradientMethod::kGrey;
+  } else {
+    throw UsageError("Option -method expects max, dizenzo or grey, got '" + method + "'",
+                     p.Synopsis());
+  }
+  if (!(min_length >= 2))
+    throw UsageError("Option -min-length expects a length of at least 2 px", p.Synopsis());
+  r.edges.min_length = min_length;
+  const LinesSummary s = RunLines(r, *ctx.progress);
+  if (!ctx.quiet) std::cout << FormatLinesSummary(s) << "Wrote " << r.output << "\n";
+  return 0;
+}
+
+const CommandRegistration kRegistration{
+    {"lines", "extract straight colour edge segments of every image, one layer per image", Lines}};
+
+}  // namespace
+}  // namespace roofsweep::cli

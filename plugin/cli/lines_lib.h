@@ -1,0 +1,53 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "algorithms/core/progress.h"
+#include "algorithms/edges/edge_options.h"
+
+namespace roofsweep {
+
+struct LinesRequest {
+  std::string block;   // anything OpenBlockManifest accepts
+  std::string output;  // vector file holding one layer per image (.gpkg)
+  std::string format;  // GDAL driver; empty: from the extension
+  bool overwrite = false;
+  std::string png_dir;  // optional: overlays of the segments on each image
+  EdgeOptions edges;
+};
+
+struct LinesImageSummary {
+  std::string image;  // manifest image name
+  std::string layer;
+  int width = 0, height = 0, bands = 0;
+  int segments = 0;
+  double ms = 0;  // read + extraction
+};
+
+struct LinesSummary {
+  std::vector<LinesImageSummary> images;  // in manifest order
+  double seconds = 0;
+};
+
+// Layer name for an image file: "lines_" + the file stem with every
+// character outside [A-Za-z0-9_] replaced by '_' ("001.jpg" -> "lines_001").
+std::string LinesLayerName(const std::string& image_path);
+
+// `roofsweep lines`: straight colour edge segments (Scholze et al. 2000, §2)
+// of every image of a block. Writes one 2D LineString layer per image
+// (LinesLayerName; names that collide, ignoring case, get "_2", "_3", ...),
+// in image pixel coordinates: x right, y down, origin at the top-left
+// CORNER of the top-left pixel, no CRS. Fields per segment: length_px,
+// direction_deg (atan2(dy, dx) from p0 to p1, image axes, y down),
+// contrast, band, method, rms_residual_px, support, colour_left,
+// colour_right (#rrggbb; the brighter side is on the left walking p0->p1).
+// Images are processed in parallel; the output does not depend on the
+// thread count. Any unreadable image refuses the whole block (nothing is
+// written). With png_dir, writes <layer>.png: the image with the segments
+// drawn over it.
+LinesSummary RunLines(const LinesRequest& request, Progress& progress);
+
+std::string FormatLinesSummary(const LinesSummary& summary);
+
+}  // namespace roofsweep
