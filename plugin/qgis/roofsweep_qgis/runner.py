@@ -112,7 +112,7 @@ def require_command(exe, command, options=()):
     ok, text = command_help(exe, command)
     if not ok:
         raise QgsProcessingException("roofsweep {} is not available in this build ({})".format(command, exe))
-    known = set(re.findall(r"(?<![\w-])(--?[A-Za-z_][\w]*)", text))
+    known = set(re.findall(r"(?<![\w-])(--?[A-Za-z_][\w-]*)", text))
     missing = [o for o in options if o not in known]
     if missing:
         raise QgsProcessingException(

@@ -30,7 +30,8 @@ def test_simulate_writes_block_and_reports_progress(tiny_block):
     assert os.path.isfile(res["BLOCK"])
     assert os.path.isfile(res["GROUNDTRUTH"])
     assert res["VIEW_COUNT"] == 2
-    assert res["BUILDING_COUNT"] == 3
+    with open(os.path.join(res["OUTPUT"], "simulation.json")) as f:
+        assert res["BUILDING_COUNT"] == json.load(f)["buildings"] > 0
     with open(res["BLOCK"]) as f:
         assert len(json.load(f)["images"]) == 2
     # GDAL dots became progress: it rose through the run and ended at 100.
@@ -88,9 +89,10 @@ def test_convert_groundtruth_to_gpkg_loads_3d_polygon_layers(tiny_block, tmp_pat
                           feedback=fb)
     assert conv["OUTPUT"] == out and os.path.isfile(out)
     counts = _gpkg_layer_checks(out, conv["LAYERS"])
-    assert counts["buildings"] == 3
-    assert counts["ground_surfaces"] == 3
-    assert counts["roof_surfaces"] >= 3 and counts["wall_surfaces"] >= 12
+    n = res["BUILDING_COUNT"]
+    assert counts["buildings"] == n
+    assert counts["ground_surfaces"] == n
+    assert counts["roof_surfaces"] >= n and counts["wall_surfaces"] >= 4 * n
     for name in CITYMODEL_LAYERS:
         crs = QgsVectorLayer("{}|layername={}".format(out, name), name, "ogr").crs()
         assert crs.isValid()
@@ -119,10 +121,11 @@ def test_convert_to_cityjson_and_back(tiny_block, tmp_path):
     with open(cj) as f:
         doc = json.load(f)
     assert doc["type"] == "CityJSON"
-    assert sum(1 for o in doc["CityObjects"].values() if o["type"] == "Building") == 3
+    n = res["BUILDING_COUNT"]
+    assert sum(1 for o in doc["CityObjects"].values() if o["type"] == "Building") == n
     back = str(tmp_path / "back.gpkg")
     conv = processing.run("roofsweep:convert", {"INPUT": cj, "OUTPUT": back}, feedback=RecordingFeedback())
-    assert _gpkg_layer_checks(back, conv["LAYERS"])["buildings"] == 3
+    assert _gpkg_layer_checks(back, conv["LAYERS"])["buildings"] == n
 
 
 def test_failing_run_raises_with_the_error_line(tmp_path):
@@ -169,6 +172,16 @@ def test_cancel_terminates_the_program(tmp_path):
     assert elapsed < 25, elapsed
 
 
+@pytest.mark.xfail(reason="roofsweep has no SIGTERM handler: a terminated simulate leaves its "
+                          "temporary folder .<name>.tmp<pid> behind (plugin/cli/main.cc)", strict=False)
+def test_cancel_leaves_no_temporary_folder(tmp_path):
+    out = tmp_path / "cancelled"
+    with pytest.raises(QgsProcessingException, match="cancelled"):
+        processing.run("roofsweep:simulate", {"PRESET": 1, "SEED": 1, "STRIPS": 1, "VIEWS": 3,
+                                              "OUTPUT": str(out)}, feedback=RecordingFeedback(cancel_at=5))
+    assert sorted(os.listdir(tmp_path)) == []
+
+
 def test_import_and_info_on_ngi_block(shared_dir, tmp_path, roofsweep_exe):
     ngi = shared_or_skip(shared_dir, "data/multiview/orthority-ngi-aerial")
     with open(os.path.join(ngi, "ngi_xyz_opk.prj")) as f:
@@ -211,21 +224,70 @@ def test_eval_groundtruth_against_itself(tiny_block, tmp_path, roofsweep_exe):
                                             "OUTPUT": report}, feedback=RecordingFeedback())
     with open(out["OUTPUT"]) as f:
         doc = json.load(f)
-    text = json.dumps(doc)
-    assert "completeness" in text, text[:500]
+    # The truth scored against itself is perfect.
+    assert doc["buildings"]["n_reference"] == res["BUILDING_COUNT"]
+    assert out["BUILDING_COMPLETENESS"] == 1.0 and out["BUILDING_CORRECTNESS"] == 1.0
+    assert out["ROOF_COMPLETENESS"] == 1.0 and out["ROOF_CORRECTNESS"] == 1.0
+    assert out["RMSZ_M"] == pytest.approx(0.0, abs=1e-6)
 
 
-@pytest.mark.parametrize("alg,command", [("roofsweep:lines", "lines"), ("roofsweep:match", "match"),
-                                         ("roofsweep:run", "run")])
-def test_missing_subcommand_fails_clearly(alg, command, roofsweep_exe, tmp_path, tiny_block):
-    if has_command(roofsweep_exe, command):
-        pytest.skip("roofsweep {} exists in this build; covered by its own test".format(command))
+def test_lines_and_match_on_tiny_block(tiny_block, tmp_path, roofsweep_exe):
+    for command in ("lines", "match"):
+        if not has_command(roofsweep_exe, command):
+            pytest.skip("roofsweep {} is not available in this build ({})".format(command, roofsweep_exe))
     res, _ = tiny_block
-    params = {"BLOCK": res["BLOCK"], "OUTPUT": str(tmp_path / "out")}
-    if command == "match":
-        params["SEGMENTS"] = str(tmp_path)
-    with pytest.raises(QgsProcessingException, match="roofsweep {} is not available in this build".format(command)):
-        processing.run(alg, params, feedback=RecordingFeedback())
+    seg = str(tmp_path / "segments.gpkg")
+    lines = processing.run("roofsweep:lines", {"BLOCK": res["BLOCK"], "OUTPUT": seg}, feedback=RecordingFeedback())
+    assert lines["OUTPUT"] == seg
+    from osgeo import ogr
+
+    ds = ogr.Open(seg)
+    names = sorted(ds.GetLayer(i).GetName() for i in range(ds.GetLayerCount()))
+    assert names == ["lines_s01_i001", "lines_s01_i002"], names
+    assert all(ds.GetLayerByName(n).GetFeatureCount() > 0 for n in names)
+    ds = None
+
+    l3 = str(tmp_path / "lines3d.gpkg")
+    fb = RecordingFeedback()
+    match = processing.run("roofsweep:match", {"BLOCK": res["BLOCK"], "OUTPUT": l3,
+                                               "TRUTH": os.path.join(res["OUTPUT"], "groundtruth_edges.json")},
+                           feedback=fb)
+    assert match["LAYERS"] == [l3 + "|layername=lines3d"]
+    lyr = QgsVectorLayer(match["LAYERS"][0], "l3", "ogr")
+    assert lyr.isValid() and lyr.featureCount() > 0
+    assert QgsWkbTypes.hasZ(lyr.wkbType())
+    assert QgsWkbTypes.geometryType(lyr.wkbType()) == QgsWkbTypes.LineGeometry
+    assert _horizontal_epsg(lyr.crs()) == ("EPSG", "25832")
+    assert fb.progress_values and fb.progress_values[-1] == 100
+    assert any("3D lines" in c for c in fb.console), fb.console
+
+
+def test_unavailable_subcommand_fails_clearly(tmp_path, tiny_block):
+    """A program lacking a subcommand (its --help exits 1) is named, and nothing runs."""
+    from processing.core.ProcessingConfig import ProcessingConfig
+
+    from roofsweep_qgis import runner
+
+    log = tmp_path / "calls.txt"
+    old = tmp_path / "roofsweep"
+    old.write_text("#!/bin/sh\necho \"$@\" >> {}\n"
+                   "echo \"ERROR 5: Unknown command '$1'\" >&2\nexit 1\n".format(log))
+    old.chmod(0o755)
+    res, _ = tiny_block
+    ProcessingConfig.setSettingValue(runner.EXE_SETTING, str(old))
+    try:
+        for alg, command, params in (
+                ("roofsweep:run", "run", {"BLOCK": res["BLOCK"], "OUTPUT": str(tmp_path / "b.gpkg")}),
+                ("roofsweep:lines", "lines", {"BLOCK": res["BLOCK"], "OUTPUT": str(tmp_path / "s.gpkg")}),
+                ("roofsweep:convert", "convert", {"INPUT": res["GROUNDTRUTH"],
+                                                  "OUTPUT": str(tmp_path / "c.gpkg")})):
+            with pytest.raises(QgsProcessingException,
+                               match="roofsweep {} is not available in this build".format(command)):
+                processing.run(alg, params, feedback=RecordingFeedback())
+    finally:
+        ProcessingConfig.setSettingValue(runner.EXE_SETTING, "")
+    calls = log.read_text().splitlines()
+    assert calls and all(line.endswith("--help") for line in calls), calls
 
 
 def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path):

@@ -18,6 +18,15 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
             "simulation. Writes the report as JSON.")
     USES_OPTIONS = ("--json", "-lines", "-png", "-gsd", "-overwrite")
 
+    # Output name -> (report section, key): the headline figures.
+    FIGURES = {"ROOF_COMPLETENESS": ("roof_planes", "completeness"),
+               "ROOF_CORRECTNESS": ("roof_planes", "correctness"),
+               "ROOF_QUALITY": ("roof_planes", "quality"),
+               "BUILDING_COMPLETENESS": ("buildings", "completeness"),
+               "BUILDING_CORRECTNESS": ("buildings", "correctness"),
+               "RMSZ_M": ("geometry", "rmsz_m"),
+               "LINES_COMPLETENESS": ("lines3d", "completeness")}
+
     RESULT = "RESULT"
     GROUNDTRUTH = "GROUNDTRUTH"
     LINES = "LINES"
@@ -36,6 +45,8 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterFileDestination(self.PNG, self.tr("Plan-view overlay"),
                                                                 fileFilter="PNG (*.png)", optional=True,
                                                                 createByDefault=False))
+        for name, (section, key) in self.FIGURES.items():
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr("{} {}".format(section, key))))
 
     def processAlgorithm(self, parameters, context, feedback):
         args = ["-q", "--json",
@@ -58,6 +69,10 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
             json.dump(report, f, indent=2)
         feedback.pushInfo(json.dumps(report, indent=2)[:4000])
         result = {self.OUTPUT: out}
+        for name, (section, key) in self.FIGURES.items():
+            value = report.get(section, {}).get(key) if isinstance(report.get(section), dict) else None
+            if isinstance(value, (int, float)):
+                result[name] = value
         if png:
             result[self.PNG] = png
         return result

@@ -1,28 +1,52 @@
 """Extract line segments: roofsweep lines."""
 
-from qgis.core import QgsProcessingParameterFile, QgsProcessingParameterFolderDestination
+from qgis.core import (QgsProcessingParameterEnum, QgsProcessingParameterFile,
+                       QgsProcessingParameterFileDestination, QgsProcessingParameterFolderDestination,
+                       QgsProcessingParameterNumber)
 
 from .base import RoofsweepAlgorithm
+
+METHODS = ("max", "dizenzo", "grey")
 
 
 class LinesAlgorithm(RoofsweepAlgorithm):
     COMMAND = "lines"
     NAME = "lines"
     DISPLAY = "Extract line segments"
-    HELP = ("Extracts colour edges and straight line segments (Scholze 2000) from every image of a block and "
-            "writes them, one segments file per view, into the output folder.")
-    USES_OPTIONS = ("-o", "-overwrite")
+    HELP = ("Extracts straight colour edge segments (Scholze 2000) from every image of a block and writes one "
+            "LineString layer per image (lines_<image>) in image pixel coordinates (x right, y down, origin at "
+            "the top-left corner; no CRS). The layers are not added to the map, which is georeferenced.")
+    USES_OPTIONS = ("-o", "-method", "-min-length", "-png", "-overwrite")
 
     BLOCK = "BLOCK"
+    METHOD = "METHOD"
+    MIN_LENGTH = "MIN_LENGTH"
+    PNG = "PNG"
     OUTPUT = "OUTPUT"
 
     def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(self.BLOCK, self.tr("Block manifest"),
                                                      fileFilter="Block manifest (*.json)"))
-        self.addParameter(QgsProcessingParameterFolderDestination(self.OUTPUT, self.tr("Segments folder")))
+        self.addParameter(QgsProcessingParameterEnum(self.METHOD, self.tr("Gradient fusion of the colour bands"),
+                                                     options=list(METHODS), defaultValue=0))
+        self.addParameter(QgsProcessingParameterNumber(self.MIN_LENGTH, self.tr("Shortest segment kept (pixels)"),
+                                                       QgsProcessingParameterNumber.Double, 15.0, False, 2.0))
+        self.addParameter(QgsProcessingParameterFolderDestination(self.PNG, self.tr("Overlay images folder"),
+                                                                  optional=True, createByDefault=False))
+        self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Segments"),
+                                                                fileFilter="GeoPackage (*.gpkg)"))
 
     def processAlgorithm(self, parameters, context, feedback):
         block = self.existing_file(self.parameterAsFile(parameters, self.BLOCK, context), "Block")
-        out = self.parameterAsString(parameters, self.OUTPUT, context)
-        self.run_program([block, "-overwrite", "-o", out], feedback)
-        return {self.OUTPUT: out}
+        out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
+        args = [block, "-method", METHODS[self.parameterAsEnum(parameters, self.METHOD, context)],
+                "-min-length", repr(self.parameterAsDouble(parameters, self.MIN_LENGTH, context))]
+        png = self.parameterAsString(parameters, self.PNG, context) if self.given(parameters, self.PNG) else ""
+        if png:
+            args += ["-png", png]
+        args += ["-overwrite", "-o", out]
+        self.run_program(args, feedback)
+        result = {self.OUTPUT: out}
+        if png:
+            result[self.PNG] = png
+        return result

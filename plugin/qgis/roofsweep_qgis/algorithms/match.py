@@ -10,12 +10,14 @@ class MatchAlgorithm(RoofsweepAlgorithm):
     COMMAND = "match"
     NAME = "match"
     DISPLAY = "Reconstruct 3D lines"
-    HELP = ("Matches the line segments of all views of a block into 3D lines (colour-aware matching, Scholze "
-            "2000) and writes them to a GeoPackage layer lines3d, which is added to the project.")
-    USES_OPTIONS = ("-segments", "-o", "-overwrite")
+    HELP = ("Matches straight colour edge segments across the views of a block into 3D lines (Scholze 2000: "
+            "geometric, chromatic and correlation tests, multi-view verification, least-squares lines) and "
+            "writes a LineStringZ layer lines3d, which is added to the project. With the ground-truth edges "
+            "of a simulation the log also reports true-pair counts and line scores.")
+    USES_OPTIONS = ("-o", "-truth", "-overwrite")
 
     BLOCK = "BLOCK"
-    SEGMENTS = "SEGMENTS"
+    TRUTH = "TRUTH"
     OUTPUT = "OUTPUT"
     LAYERS = "LAYERS"
 
@@ -23,16 +25,22 @@ class MatchAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterFile(self.BLOCK, self.tr("Block manifest"),
                                                      fileFilter="Block manifest (*.json)"))
         self.addParameter(QgsProcessingParameterFile(
-            self.SEGMENTS, self.tr("Segments folder (from Extract line segments)"),
-            behavior=QgsProcessingParameterFile.Folder))
+            self.TRUTH, self.tr("Ground-truth edges of a simulation (groundtruth_edges.json)"), optional=True,
+            fileFilter="JSON (*.json)"))
         self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("3D lines"),
                                                                 fileFilter="GeoPackage (*.gpkg)"))
         self.addOutput(QgsProcessingOutputMultipleLayers(self.LAYERS, self.tr("Loaded layers")))
 
     def processAlgorithm(self, parameters, context, feedback):
         block = self.existing_file(self.parameterAsFile(parameters, self.BLOCK, context), "Block")
-        segments = self.existing_file(self.parameterAsFile(parameters, self.SEGMENTS, context), "Segments folder")
         out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
-        self.run_program([block, "-segments", segments, "-overwrite", "-o", out], feedback)
-        layers = self.load_gpkg_layers(out, LINES_LAYERS, context, self.OUTPUT)
+        args = [block]
+        if self.given(parameters, self.TRUTH):
+            args += ["-truth", self.existing_file(self.parameterAsFile(parameters, self.TRUTH, context),
+                                                  "Ground-truth edges")]
+        args += ["-overwrite", "-o", out]
+        self.run_program(args, feedback)
+        layers = []
+        if out.lower().endswith(".gpkg"):
+            layers = self.load_gpkg_layers(out, LINES_LAYERS, context, self.OUTPUT)
         return {self.OUTPUT: out, self.LAYERS: layers}
