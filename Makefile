@@ -21,6 +21,7 @@ build: deps $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
 
 test: build
+	@scripts/install-deps.sh --qgis
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900
 
 $(BUILD_SAN)/build.ninja:
@@ -44,3 +45,9 @@ format:
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN) out
+
+# The QGIS plugin as a zip for Plugins > Install from ZIP.
+qgis-plugin:
+	@mkdir -p dist
+	python3 plugin/qgis/make_zip.py dist/roofsweep_qgis.zip
+	@echo "Wrote dist/roofsweep_qgis.zip"

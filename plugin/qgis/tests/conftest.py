@@ -82,8 +82,8 @@ def roofsweep_exe():
 @pytest.fixture(scope="session")
 def shared_dir():
     """Shared data folder: ROOFSWEEP_SHARED_DIR, else ../shared beside the checkout."""
-    d = os.environ.get("ROOFSWEEP_SHARED_DIR") or os.path.normpath(os.path.join(HERE, "..", "..", "..", "..",
-                                                                                "shared"))
+    d = (os.environ.get("ROOFSWEEP_SHARED_DIR") or os.environ.get("ROOFSWEEP_SHARED_DIR_DEFAULT") or
+         os.path.normpath(os.path.join(HERE, "..", "..", "..", "..", "shared")))
     return d
 
 
