@@ -1,0 +1,237 @@
+// rs_edges_sim_eval: measures the 2D segment detectors against the
+// simulator's ground truth (issue 4). Simulates the `realistic` preset for
+// a few seeds, runs ExtractSegments with the max, Di Zenzo and grey methods
+// and OpenCV's LSD on every view, scores them with EvaluateSegments2D
+// (visibility from the renderer's depth map) and prints one table.
+//
+//   rs_edges_sim_eval [--seeds 1,2,3] [--size PX] [--strips N] [--views N]
+//
+// A plain program, not a test: it takes minutes, and its figures are
+// reported, not asserted.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <opencv2/imgproc.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "algorithms/core/progress.h"
+#include "algorithms/edges/extract_segments.h"
+#include "algorithms/eval/segments2d_eval.h"
+#include "algorithms/simulate/presets.h"
+#include "algorithms/simulate/renderer.h"
+
+namespace roofsweep {
+namespace {
+
+using sim::EdgeKind;
+
+struct Totals {
+  eval::LengthScore roof;
+  std::map<EdgeKind, eval::LengthScore> kinds;
+  // Outline (eave, verge) of the roofs coloured to match the lawn's
+  // luminance, and ridges/hips/valleys/breaks of roofs whose faces all share
+  // one material (only the shading separates the faces).
+  eval::LengthScore isoluminant_outline, isoluminant_inner, uniform_inner;
+  double detected = 0, on_truth = 0;
+  long segments = 0;
+  int images = 0;
+  double ms = 0;
+};
+
+void Add(eval::LengthScore& a, const eval::LengthScore& b) {
+  a.length_px += b.length_px;
+  a.covered_px += b.covered_px;
+}
+
+bool IsInner(EdgeKind k) {
+  return k == EdgeKind::kRidge || k == EdgeKind::kHip || k == EdgeKind::kValley ||
+         k == EdgeKind::kBreak;
+}
+
+// OpenCV's LSD on the grey image; its coordinates put the origin at the
+// centre of the top-left pixel, roofsweep's at the corner: +0.5.
+Segments2D Lsd(const cv::Mat& rgb8, double min_length) {
+  cv::Mat grey;
+  cv::cvtColor(rgb8, grey, cv::COLOR_RGB2GRAY);
+  cv::Ptr<cv::LineSegmentDetector> lsd = cv::createLineSegmentDetector(cv::LSD_REFINE_STD);
+  std::vector<cv::Vec4f> lines;
+  lsd->detect(grey, lines);
+  Segments2D out;
+  for (const cv::Vec4f& l : lines) {
+    Segment2D s;
+    s.p0 = Eigen::Vector2d(l[0] + 0.5, l[1] + 0.5);
+    s.p1 = Eigen::Vector2d(l[2] + 0.5, l[3] + 0.5);
+    s.method = GradientMethod::kGrey;
+    if (s.Length() >= min_length) out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<int> ParseList(const std::string& s) {
+  std::vector<int> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(std::atoi(item.c_str()));
+  return out;
+}
+
+double Pct(const eval::LengthScore& s) { return s.length_px > 0 ? 100.0 * s.Ratio() : -1; }
+
+void PrintCell(double pct) {
+  if (pct < 0)
+    std::printf(" %7s", "-");
+  else
+    std::printf(" %6.1f%%", pct);
+}
+
+int Main(int argc, char** argv) {
+  std::vector<int> seeds = {1, 2, 3};
+  int size = 0, strips = 0, views = 0;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i], v = argv[i + 1];
+    if (a == "--seeds")
+      seeds = ParseList(v);
+    else if (a == "--size")
+      size = std::atoi(v.c_str());
+    else if (a == "--strips")
+      strips = std::atoi(v.c_str());
+    else if (a == "--views")
+      views = std::atoi(v.c_str());
+    else {
+      std::fprintf(stderr, "unknown option %s\n", a.c_str());
+      return 2;
+    }
+  }
+  const std::vector<std::string> methods = {"max", "dizenzo", "grey", "lsd"};
+  std::map<std::string, Totals> totals;
+  std::set<EdgeKind> seen_kinds;
+  double isoluminant_buildings = 0, buildings = 0;
+  for (int seed : seeds) {
+    sim::SimulationOptions o = sim::SimulationPreset("realistic");
+    o.seed = static_cast<uint64_t>(seed);
+    if (size > 0) o.cameras.image_width = o.cameras.image_height = size;
+    if (strips > 0) o.cameras.strips = strips;
+    if (views > 0) o.cameras.images_per_strip = views;
+    NullProgress np;
+    const auto t0 = std::chrono::steady_clock::now();
+    const sim::SimulationResult r = sim::Simulate(o, np);
+    const double sim_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const sim::Renderer renderer(r.scene, o.render);
+
+    // Building subsets from the materials (the truth has no colours).
+    const size_t nb = r.scene.city.buildings.size();
+    std::vector<bool> isoluminant(nb, false), uniform(nb, false);
+    for (size_t b = 0; b < nb; ++b) {
+      std::set<int> roof_mats;
+      const auto& surfaces = r.scene.city.buildings[b].surfaces;
+      for (size_t s = 0; s < surfaces.size(); ++s) {
+        if (surfaces[s].type != SurfaceType::kRoof) continue;
+        const int m = r.scene.surface_materials[b][s];
+        roof_mats.insert(m);
+        if (r.scene.materials[static_cast<size_t>(m)].name.find("isoluminant") != std::string::npos)
+          isoluminant[b] = true;
+      }
+      uniform[b] = roof_mats.size() == 1;
+      isoluminant_buildings += isoluminant[b];
+    }
+    buildings += nb;
+    std::fprintf(
+        stderr,
+        "seed %d: %zu buildings (%d isoluminant), %zu views of %d x %d, %zu true "
+        "edges, simulated in %.1f s\n",
+        seed, nb, static_cast<int>(std::count(isoluminant.begin(), isoluminant.end(), true)),
+        r.views.size(), o.cameras.image_width, o.cameras.image_height, r.truth.edges.size(), sim_s);
+
+    for (size_t v = 0; v < r.views.size(); ++v) {
+      const sim::SimulatedView& view = r.views[v];
+      const sim::GeometryMaps maps = renderer.RenderGeometry(view.camera, view.pose);
+      const eval::VisibilityFn visible = eval::DepthMapVisibility(maps.depth);
+      cv::Mat image;
+      r.images[v].convertTo(image, CV_32FC3, 1.0 / 255.0);
+      for (const std::string& m : methods) {
+        const auto t1 = std::chrono::steady_clock::now();
+        Segments2D segments;
+        if (m == "lsd") {
+          segments = Lsd(r.images[v], 15.0);
+        } else {
+          EdgeOptions eo;
+          eo.method = m == "max"       ? GradientMethod::kMax
+                      : m == "dizenzo" ? GradientMethod::kDiZenzo
+                                       : GradientMethod::kGrey;
+          segments = ExtractSegments(image, eo);
+        }
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1)
+                .count();
+        const eval::Segment2DScores s =
+            eval::EvaluateSegments2D(view.camera, view.pose, r.truth.edges, visible, segments);
+        Totals& t = totals[m];
+        Add(t.roof, s.roof);
+        for (const auto& [k, score] : s.per_kind) {
+          Add(t.kinds[k], score);
+          seen_kinds.insert(k);
+        }
+        for (size_t e = 0; e < r.truth.edges.size(); ++e) {
+          const sim::TrueEdge& edge = r.truth.edges[e];
+          if (edge.building < 0) continue;
+          const size_t b = static_cast<size_t>(edge.building);
+          const bool outline = edge.kind == EdgeKind::kEave || edge.kind == EdgeKind::kVerge;
+          if (isoluminant[b] && outline) Add(t.isoluminant_outline, s.per_edge[e]);
+          if (isoluminant[b] && IsInner(edge.kind)) Add(t.isoluminant_inner, s.per_edge[e]);
+          if (uniform[b] && IsInner(edge.kind)) Add(t.uniform_inner, s.per_edge[e]);
+        }
+        t.detected += s.detected_px;
+        t.on_truth += s.detected_on_truth_px;
+        t.segments += s.segments;
+        t.images += 1;
+        t.ms += ms;
+      }
+    }
+  }
+
+  std::printf("\nrealistic preset, seeds");
+  for (int s : seeds) std::printf(" %d", s);
+  std::printf(
+      "; %d images per method; tolerance 1.5 px / 5 deg; true edges >= 15 px, visible "
+      "(depth map)\n\n",
+      totals[methods[0]].images);
+  std::printf("%-8s %7s %7s %7s %7s %8s", "method", "recall", "prec.", "seg/img", "ms/img",
+              "iso-out");
+  std::printf(" %7s %7s", "iso-in", "unif-in");
+  for (EdgeKind k : seen_kinds) std::printf(" %7.7s", sim::EdgeKindName(k));
+  std::printf("\n");
+  for (const std::string& m : methods) {
+    const Totals& t = totals[m];
+    std::printf("%-8s", m.c_str());
+    PrintCell(Pct(t.roof));
+    PrintCell(t.detected > 0 ? 100.0 * t.on_truth / t.detected : -1);
+    std::printf(" %7.0f %7.1f ", static_cast<double>(t.segments) / t.images, t.ms / t.images);
+    PrintCell(Pct(t.isoluminant_outline));
+    PrintCell(Pct(t.isoluminant_inner));
+    PrintCell(Pct(t.uniform_inner));
+    for (EdgeKind k : seen_kinds) PrintCell(Pct(t.kinds.at(k)));
+    std::printf("\n");
+  }
+  const Totals& t = totals[methods[0]];
+  std::printf(
+      "\nvisible evaluated length (px): roof %.0f, iso-out %.0f, iso-in %.0f, unif-in %.0f;",
+      t.roof.length_px, t.isoluminant_outline.length_px, t.isoluminant_inner.length_px,
+      t.uniform_inner.length_px);
+  for (EdgeKind k : seen_kinds)
+    std::printf(" %s %.0f", sim::EdgeKindName(k), t.kinds.at(k).length_px);
+  std::printf("\nbuildings %.0f, isoluminant %.0f\n", buildings, isoluminant_buildings);
+  std::printf(
+      "iso-out: eaves+verges of isoluminant roofs; iso-in / unif-in: ridges, hips, "
+      "valleys, breaks of isoluminant roofs / of roofs with one material on all faces\n");
+  return 0;
+}
+
+}  // namespace
+}  // namespace roofsweep
+
+int main(int argc, char** argv) { return roofsweep::Main(argc, argv); }
