@@ -69,10 +69,10 @@ def test_qgis_process_help_shows_parameters(qgis_env):
 def test_qgis_process_simulate_then_convert(qgis_env, tmp_path):
     block = tmp_path / "block"
     p = qgis_process(qgis_env, "--json", "run", "roofsweep:simulate", "--", "PRESET=0", "SEED=5", "SIZE=512",
-                     "STRIPS=1", "VIEWS=2", "BUILDINGS=2", "OBLIQUES=false", "OUTPUT=" + str(block))
+                     "GSD=0.15", "STRIPS=1", "VIEWS=2", "BUILDINGS=2", "OBLIQUES=false", "OUTPUT=" + str(block))
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
     sim = json.loads(p.stdout)["results"]
-    assert os.path.isfile(sim["GROUNDTRUTH"])
+    assert os.path.isfile(sim["GROUNDTRUTH"]) and sim["BUILDING_COUNT"] > 0
 
     out = tmp_path / "gt.gpkg"
     p = qgis_process(qgis_env, "run", "roofsweep:convert", "--INPUT=" + sim["GROUNDTRUTH"], "--FORMAT=0",
