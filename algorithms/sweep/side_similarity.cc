@@ -1,0 +1,138 @@
+#include "algorithms/sweep/side_similarity.h"
+
+#include <cmath>
+
+namespace roofsweep {
+
+bool SampleBilinear(const cv::Mat& image, double x, double y, float* value) {
+  if (!(x >= 0 && y >= 0 && x <= image.cols - 1 && y <= image.rows - 1)) return false;
+  const int x0 = std::min(static_cast<int>(x), image.cols - 2);
+  const int y0 = std::min(static_cast<int>(y), image.rows - 2);
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  const float* r0 = image.ptr<float>(y0) + x0;
+  const float* r1 = image.ptr<float>(y0 + 1) + x0;
+  *value = (1 - fy) * ((1 - fx) * r0[0] + fx * r0[1]) + fy * ((1 - fx) * r1[0] + fx * r1[1]);
+  return true;
+}
+
+SideSimilarity::SideSimilarity(const Block& block, const std::vector<ViewTexture>& textures,
+                               const HalfPlaneFamily& family, int reference_view,
+                               const std::vector<int>& other_views,
+                               const std::vector<BandPoint>& points, const SweepOptions& options)
+    : family_(family) {
+  const View& ref = block.views.at(reference_view);
+  ref_camera_ = &block.CameraOf(ref);
+  ref_pose_ = &ref.pose;
+  const cv::Mat& ref_grey = textures.at(reference_view).grey;
+  const int r = std::max(0, options.ncc_radius);
+  window_size_ = (2 * r + 1) * (2 * r + 1);
+  points_.reserve(points.size());
+  for (const BandPoint& bp : points) {
+    Point p;
+    p.weight = 1.0 / std::max(1.0, bp.distance);
+    p.ref.reserve(window_size_);
+    p.window.reserve(window_size_);
+    double sum = 0;
+    bool inside = true;
+    for (int dy = -r; dy <= r && inside; ++dy) {
+      for (int dx = -r; dx <= r; ++dx) {
+        const Eigen::Vector2d px = bp.pixel + Eigen::Vector2d(dx, dy);
+        float value;
+        if (!SampleBilinear(ref_grey, px.x() - 0.5, px.y() - 0.5, &value)) {
+          inside = false;
+          break;
+        }
+        p.ref.push_back(value);
+        sum += value;
+        const Eigen::Vector2d ideal = IdealPixel(*ref_camera_, px);
+        p.window.emplace_back(ideal.x(), ideal.y(), 1.0);
+      }
+    }
+    if (inside) {
+      const double mean = sum / window_size_;
+      double ss = 0;
+      for (float& v : p.ref) {
+        v = static_cast<float>(v - mean);
+        ss += static_cast<double>(v) * v;
+      }
+      // A flat patch has no correlation to offer (grey levels of 1/255 per
+      // pixel are the floor of an 8-bit sensor).
+      if (ss > window_size_ * 1e-6) {
+        const float inv = static_cast<float>(1.0 / std::sqrt(ss));
+        for (float& v : p.ref) v *= inv;
+        p.usable = true;
+      }
+    }
+    points_.push_back(std::move(p));
+  }
+  active_.assign(points_.size(), true);
+  for (int v : other_views) {
+    const View& view = block.views.at(v);
+    OtherView o;
+    o.view = v;
+    o.camera = &block.CameraOf(view);
+    o.pair = ViewPairHomography(*ref_camera_, *ref_pose_, *o.camera, view.pose);
+    o.grey = &textures.at(v).grey;
+    views_.push_back(o);
+  }
+}
+
+int SideSimilarity::ActiveCount() const {
+  int n = 0;
+  for (size_t i = 0; i < points_.size(); ++i) n += active_[i] && points_[i].usable;
+  return n;
+}
+
+double SideSimilarity::Evaluate(double theta, std::vector<double>* per_point) const {
+  if (per_point) per_point->assign(points_.size(), 0.0);
+  const auto v = PlaneVector(*ref_camera_, *ref_pose_, family_.Plane(theta));
+  if (!v || views_.empty()) return 0.0;
+  std::vector<Eigen::Matrix3d> H;
+  H.reserve(views_.size());
+  for (const OtherView& o : views_) H.push_back(o.pair.A + o.pair.a * v->transpose());
+  std::vector<float> samples(window_size_);
+  double numerator = 0, weights = 0;
+  for (size_t pi = 0; pi < points_.size(); ++pi) {
+    const Point& p = points_[pi];
+    if (!active_[pi] || !p.usable) continue;
+    weights += p.weight;
+    double point_sum = 0;
+    // The plane must be in front of the reference camera at this point.
+    if (!(v->dot(p.window[window_size_ / 2]) > 0)) continue;
+    for (size_t vi = 0; vi < views_.size(); ++vi) {
+      const OtherView& o = views_[vi];
+      bool inside = true;
+      double mean = 0;
+      for (int k = 0; k < window_size_; ++k) {
+        const Eigen::Vector3d y = H[vi] * p.window[k];
+        if (!(y.z() > 0)) {
+          inside = false;
+          break;
+        }
+        const Eigen::Vector2d q = MeasuredPixel(*o.camera, y.head<2>() / y.z());
+        if (!SampleBilinear(*o.grey, q.x() - 0.5, q.y() - 0.5, &samples[k])) {
+          inside = false;
+          break;
+        }
+        mean += samples[k];
+      }
+      if (!inside) continue;
+      mean /= window_size_;
+      double dot = 0, ss = 0;
+      for (int k = 0; k < window_size_; ++k) {
+        const double s = samples[k] - mean;
+        dot += p.ref[k] * s;
+        ss += s * s;
+      }
+      if (!(ss > 1e-12)) continue;
+      const double cor = dot / std::sqrt(ss);
+      if (cor > 0) point_sum += cor * cor;
+    }
+    numerator += p.weight * point_sum;
+    if (per_point) (*per_point)[pi] = point_sum / views_.size();
+  }
+  if (!(weights > 0)) return 0.0;
+  return numerator / (weights * views_.size());
+}
+
+}  // namespace roofsweep

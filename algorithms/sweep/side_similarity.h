@@ -1,0 +1,67 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "algorithms/geometry/block.h"
+#include "algorithms/sweep/half_plane_family.h"
+#include "algorithms/sweep/plane_homography.h"
+#include "algorithms/sweep/points_of_interest.h"
+#include "algorithms/sweep/sweep_options.h"
+
+namespace roofsweep {
+
+// Sim(theta) of Baillard & Zisserman 2000, eq. (2), for one line side:
+//   Sim(theta) = sum_i sum_x w(x) Cor+(x, H^i(theta) x)^2 / (n sum_x w(x)),
+// over the n views i other than the reference and the active points of
+// interest x of the reference, w(x) = 1 / max(1 px, distance to the line),
+// Cor+ = max(0, NCC) on the grey images over a (2 r + 1)^2 window whose
+// pixels are mapped one by one through H^i (no affine approximation).
+// Anti-correlation is clamped to 0 (the paper squares Cor, which would
+// reward a contrast-inverted match). Points that map outside view i or
+// behind a camera score 0 there but keep their weight, so Sim stays in
+// [0, 1] and continuous in theta.
+class SideSimilarity {
+ public:
+  SideSimilarity(const Block& block, const std::vector<ViewTexture>& textures,
+                 const HalfPlaneFamily& family, int reference_view,
+                 const std::vector<int>& other_views, const std::vector<BandPoint>& points,
+                 const SweepOptions& options);
+
+  // Sim at theta (radians) over the active points. When `per_point` is
+  // given it receives each point's mean Cor+^2 over the views.
+  double Evaluate(double theta, std::vector<double>* per_point = nullptr) const;
+
+  int PointCount() const { return static_cast<int>(points_.size()); }
+  int ActiveCount() const;
+  int ViewCount() const { return static_cast<int>(views_.size()); }
+  // Restricts the sum to the points with active[i] true.
+  void SetActive(const std::vector<bool>& active) { active_ = active; }
+
+ private:
+  struct Point {
+    std::vector<Eigen::Vector3d> window;  // ideal reference pixels, homogeneous
+    std::vector<float> ref;               // zero-mean, unit-norm reference patch
+    double weight = 0;
+    bool usable = false;  // reference patch not flat
+  };
+  struct OtherView {
+    int view = -1;
+    PlaneHomography pair;  // A, a; v set per theta
+    const Camera* camera = nullptr;
+    const cv::Mat* grey = nullptr;
+  };
+  const Camera* ref_camera_;
+  const Pose* ref_pose_;
+  const HalfPlaneFamily family_;
+  std::vector<Point> points_;
+  std::vector<OtherView> views_;
+  std::vector<bool> active_;
+  int window_size_;
+};
+
+// Bilinear sample of a CV_32F image at array coordinates (pixel centre of
+// (0, 0) at 0, 0); false outside [0, cols - 1] x [0, rows - 1].
+bool SampleBilinear(const cv::Mat& image, double x, double y, float* value);
+
+}  // namespace roofsweep

@@ -1,0 +1,249 @@
+#include "algorithms/sweep/sweep_half_planes.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "algorithms/core/error.h"
+#include "algorithms/sweep/half_plane_family.h"
+#include "algorithms/sweep/points_of_interest.h"
+#include "algorithms/sweep/side_similarity.h"
+
+namespace roofsweep {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct Projected {
+  bool front = false;   // both end points in front of the camera
+  bool inside = false;  // ... and inside the image (with the margin)
+  Eigen::Vector2d p0, p1;
+};
+
+std::string Format(const char* fmt, double a, double b) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, fmt, a, b);
+  return buf;
+}
+
+// Blockers of the band of line `self` in view `view`: the other lines'
+// projections that come near it.
+std::vector<Segment2> Blockers(const std::vector<std::vector<Projected>>& projected, int view,
+                               int self, double reach) {
+  std::vector<Segment2> out;
+  const std::vector<Projected>& lines = projected[view];
+  const Projected& me = lines[self];
+  const double x0 = std::min(me.p0.x(), me.p1.x()) - reach,
+               x1 = std::max(me.p0.x(), me.p1.x()) + reach;
+  const double y0 = std::min(me.p0.y(), me.p1.y()) - reach,
+               y1 = std::max(me.p0.y(), me.p1.y()) + reach;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const Projected& o = lines[i];
+    if (static_cast<int>(i) == self || !o.front) continue;
+    if (std::max(o.p0.x(), o.p1.x()) < x0 || std::min(o.p0.x(), o.p1.x()) > x1 ||
+        std::max(o.p0.y(), o.p1.y()) < y0 || std::min(o.p0.y(), o.p1.y()) > y1)
+      continue;
+    out.emplace_back(o.p0, o.p1);
+  }
+  return out;
+}
+
+HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures,
+                    const std::vector<std::vector<Projected>>& projected,
+                    const std::vector<SweepLine>& lines, int line, int side,
+                    const SweepOptions& o) {
+  HalfPlane hp;
+  hp.line = line;
+  hp.side = side;
+  const Segment3& seg = lines[line].segment;
+  const auto family = HalfPlaneFamily::Make(seg, side, o.max_line_slope_deg);
+  if (!family) {
+    hp.reason = "degenerate or near-vertical line";
+    return hp;
+  }
+  const int n_views = static_cast<int>(block.views.size());
+  // The side's image side in each view, from the horizontal direction.
+  const Eigen::Vector3d mid = seg.At(0.5);
+  const Eigen::Vector3d off = mid + std::max(0.1, 0.1 * seg.Length()) * family->e();
+  std::vector<int> image_side(n_views, 0);
+  std::vector<int> seeing;
+  for (int v = 0; v < n_views; ++v) {
+    const Projected& p = projected[v][line];
+    if (!p.inside) continue;
+    const auto q = Project(block.CameraOf(block.views[v]), block.views[v].pose, off);
+    if (!q) continue;
+    image_side[v] = ImageSide(p.p0, p.p1, *q);
+    if (image_side[v] != 0) seeing.push_back(v);
+  }
+  // Reference: the most textured view (most points of interest, §3.3).
+  const std::vector<int>& supporting = lines[line].views;
+  std::vector<BandPoint> best_points;
+  for (int v : seeing) {
+    if (!supporting.empty() &&
+        std::find(supporting.begin(), supporting.end(), v) == supporting.end())
+      continue;
+    const Projected& p = projected[v][line];
+    const std::vector<Segment2> blockers = o.clip_at_other_lines
+                                               ? Blockers(projected, v, line, o.band_width_px)
+                                               : std::vector<Segment2>();
+    std::vector<BandPoint> pts = BandPoints(textures[v], p.p0, p.p1, image_side[v], blockers, o);
+    if (hp.reference_view < 0 || pts.size() > best_points.size()) {
+      hp.reference_view = v;
+      best_points.swap(pts);
+    }
+  }
+  hp.points_detected = static_cast<int>(best_points.size());
+  if (hp.reference_view < 0) {
+    hp.reason = "no view sees the line";
+    return hp;
+  }
+  std::vector<int> others;
+  for (int v : seeing)
+    if (v != hp.reference_view) others.push_back(v);
+  hp.views = static_cast<int>(others.size());
+  if (hp.points_detected < o.min_points) {
+    hp.reason =
+        Format("too few points of interest (%.0f < %.0f)", hp.points_detected, o.min_points);
+    return hp;
+  }
+  if (others.empty()) {
+    hp.reason = "no second view";
+    return hp;
+  }
+
+  SideSimilarity sim(block, textures, *family, hp.reference_view, others, best_points, o);
+  hp.points = sim.ActiveCount();
+  if (hp.points < o.min_points) {
+    hp.reason = Format("too few textured points (%.0f < %.0f)", hp.points, o.min_points);
+    return hp;
+  }
+  const double t_min = o.theta_min_deg * kDeg, t_max = o.theta_max_deg * kDeg;
+  const double step = o.coarse_step_deg * kDeg;
+  const int samples = std::max(2, static_cast<int>(std::floor((t_max - t_min) / step + 1e-9)) + 1);
+  hp.profile.resize(samples);
+  int k0 = 0;
+  for (int k = 0; k < samples; ++k) {
+    hp.profile[k] = sim.Evaluate(t_min + k * step);
+    if (hp.profile[k] > hp.profile[k0]) k0 = k;
+  }
+  double theta = t_min + k0 * step;
+
+  // Outsiders (§3.4): points that do not correlate at the coarse maximum,
+  // e.g. occluded or off the plane; keep at least the better half.
+  std::vector<double> score;
+  sim.Evaluate(theta, &score);
+  {
+    // The median bounds the threshold so that at most half is dropped.
+    std::vector<double> sorted = score;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double threshold = std::min(o.outlier_min_score, sorted[sorted.size() / 2]);
+    std::vector<bool> active(score.size());
+    for (size_t i = 0; i < score.size(); ++i) active[i] = score[i] >= threshold;
+    sim.SetActive(active);
+    hp.points = sim.ActiveCount();
+  }
+
+  // Parabolic refinement, halving the bracket until it is below the
+  // tolerance.
+  auto eval = [&](double t) { return sim.Evaluate(std::clamp(t, t_min, t_max)); };
+  double h = step;
+  double s0 = eval(theta);
+  for (;;) {
+    const double sm = eval(theta - h), sp = eval(theta + h);
+    const double denom = sm - 2 * s0 + sp;
+    double delta;
+    if (denom < 0) {
+      delta = std::clamp(0.5 * h * (sm - sp) / denom, -h, h);
+    } else {
+      delta = sp > sm ? h : (sm > sp ? -h : 0.0);
+    }
+    theta = std::clamp(theta + delta, t_min, t_max);
+    if (h <= o.refine_tolerance_deg * kDeg) break;
+    h *= 0.5;
+    s0 = eval(theta);
+  }
+  hp.similarity = eval(theta);
+  const double hc = o.curvature_step_deg * kDeg;
+  hp.curvature = (eval(theta - hc) - 2 * hp.similarity + eval(theta + hc)) / (hc * hc);
+  hp.theta_deg = theta / kDeg;
+  hp.plane = family->Plane(theta);
+
+  if (hp.views < o.min_views) {
+    hp.reason = Format("too few views (%.0f < %.0f)", hp.views, o.min_views);
+  } else if (k0 == 0 || k0 == samples - 1) {
+    hp.reason = "maximum at the end of the angle range";
+  } else if (hp.similarity < o.min_similarity) {
+    hp.reason = Format("similarity %.3f < %.3f", hp.similarity, o.min_similarity);
+  } else if (!(hp.curvature <= -o.min_curvature)) {
+    hp.reason = Format("curvature %.2f above -%.2f per rad^2", hp.curvature, o.min_curvature);
+  } else {
+    hp.accepted = true;
+  }
+  return hp;
+}
+
+}  // namespace
+
+std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                       const std::vector<SweepLine>& lines,
+                                       const SweepOptions& options, Progress& progress) {
+  const int n_views = static_cast<int>(block.views.size());
+  if (static_cast<int>(images.size()) != n_views)
+    throw Error("sweep: " + std::to_string(images.size()) + " images for " +
+                std::to_string(n_views) + " views of " + block.source);
+  for (int v = 0; v < n_views; ++v) {
+    const cv::Mat& im = images[v];
+    const Camera& cam = block.CameraOf(block.views[v]);
+    if (im.type() != CV_32FC3 && im.type() != CV_32FC1)
+      throw Error("sweep: image of view '" + block.views[v].name + "' is not CV_32FC3 or CV_32FC1");
+    if (im.cols != cam.width || im.rows != cam.height)
+      throw Error("sweep: image of view '" + block.views[v].name + "' is " +
+                  std::to_string(im.cols) + "x" + std::to_string(im.rows) + ", camera '" + cam.id +
+                  "' is " + std::to_string(cam.width) + "x" + std::to_string(cam.height));
+  }
+  ReportOrCancel(progress, 0.0, "sweep: preparing views");
+  std::vector<ViewTexture> textures(n_views);
+  tbb::parallel_for(0, n_views,
+                    [&](int v) { textures[v] = PrepareViewTexture(images[v], options); });
+
+  const int n_lines = static_cast<int>(lines.size());
+  std::vector<std::vector<Projected>> projected(n_views, std::vector<Projected>(n_lines));
+  tbb::parallel_for(0, n_views, [&](int v) {
+    const Camera& cam = block.CameraOf(block.views[v]);
+    const Pose& pose = block.views[v].pose;
+    const double m = options.view_margin_px + options.ncc_radius;
+    auto in = [&](const Eigen::Vector2d& p) {
+      return p.x() >= m && p.y() >= m && p.x() <= cam.width - m && p.y() <= cam.height - m;
+    };
+    for (int i = 0; i < n_lines; ++i) {
+      const auto a = Project(cam, pose, lines[i].segment.a);
+      const auto b = Project(cam, pose, lines[i].segment.b);
+      Projected& p = projected[v][i];
+      if (!a || !b) continue;
+      p.front = true;
+      p.p0 = *a;
+      p.p1 = *b;
+      p.inside = in(*a) && in(*b);
+    }
+  });
+
+  std::vector<HalfPlane> out(2 * static_cast<size_t>(n_lines));
+  constexpr int kChunk = 64;
+  for (int begin = 0; begin < n_lines; begin += kChunk) {
+    ReportOrCancel(progress, 0.05 + 0.95 * begin / std::max(1, n_lines), "sweep: half-planes");
+    const int end = std::min(n_lines, begin + kChunk);
+    tbb::parallel_for(0, 2 * (end - begin), [&](int k) {
+      const int line = begin + k / 2;
+      const int side = k % 2 == 0 ? 1 : -1;
+      out[2 * static_cast<size_t>(line) + k % 2] =
+          SweepSide(block, textures, projected, lines, line, side, options);
+    });
+  }
+  ReportOrCancel(progress, 1.0, "sweep: half-planes");
+  return out;
+}
+
+}  // namespace roofsweep

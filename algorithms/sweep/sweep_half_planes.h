@@ -1,0 +1,53 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "algorithms/core/progress.h"
+#include "algorithms/geometry/block.h"
+#include "algorithms/geometry/segment3.h"
+#include "algorithms/sweep/sweep_options.h"
+
+namespace roofsweep {
+
+// A 3D line to sweep. The sweep needs only the end points; `views` (block
+// view indices where the line was observed, as matching's
+// Line3D::observations give them) restricts the choice of the reference
+// view when not empty. Every view that sees the line takes part in Sim.
+struct SweepLine {
+  Segment3 segment;
+  std::vector<int> views;
+};
+
+// One line side with its best half-plane (Baillard & Zisserman 2000, §3.4)
+// and the reliability indicators §4 sorts by.
+struct HalfPlane {
+  int line = -1;            // index into the input lines
+  int side = 0;             // +1 left of a -> b seen from above, -1 right (HalfPlaneFamily)
+  int reference_view = -1;  // most textured view of this side; -1 when none
+  double theta_deg = 0;     // HalfPlaneFamily angle of the best plane
+  Eigen::Vector4d plane = Eigen::Vector4d::Zero();  // n . X + pi_4 = 0, n unit and upward
+  double similarity = 0;                            // Sim(theta*) in [0, 1]
+  double curvature = 0;     // Sim''(theta*) per rad^2 (negative at a maximum)
+  int points = 0;           // points of interest used (after outlier removal)
+  int points_detected = 0;  // points of interest in the neighbourhood
+  int views = 0;            // views besides the reference in Sim
+  bool accepted = false;
+  std::string reason;  // why not accepted; empty when accepted
+  // Sim at the coarse samples theta_min, theta_min + step, ... (all points).
+  std::vector<double> profile;
+};
+
+// Sweeps both sides of every line: two results per line, at 2 i (side +1)
+// and 2 i + 1 (side -1). `images`: one per block view, CV_32FC3 RGB or
+// CV_32FC1 in [0, 1] (io's ReadImage), of the cameras' size. Parallel over
+// lines (TBB); the result does not depend on the thread count. Throws
+// roofsweep::Error for a count or size mismatch, Cancelled when progress
+// asks to stop.
+std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                       const std::vector<SweepLine>& lines,
+                                       const SweepOptions& options, Progress& progress);
+
+}  // namespace roofsweep

@@ -1,0 +1,68 @@
+#pragma once
+
+namespace roofsweep {
+
+// Options of the half-plane sweep (Baillard & Zisserman 2000, §3). Defaults
+// are the paper's where it gives them, otherwise chosen on simulated blocks
+// at 5 cm GSD.
+struct SweepOptions {
+  // Swept angle range and coarse step (degrees; paper: [-75, 75]).
+  double theta_min_deg = -75.0;
+  double theta_max_deg = 75.0;
+  double coarse_step_deg = 2.0;
+  // Parabolic refinement stops when the bracket half-width falls below this
+  // (paper: "uncertainty less than 1 degree").
+  double refine_tolerance_deg = 0.5;
+
+  // Acceptance (paper, figure 5): Sim(theta*) >= min_similarity and
+  // |Sim''(theta*)| >= min_curvature, with Sim'' per radian squared (the
+  // paper's figure 5 plots Sim against the angle; a peak of height ~0.3
+  // above its base with a half-width of ~15 deg has |Sim''| ~ 4 per rad^2,
+  // while 4 per deg^2 would need the score to drop by 2 within one degree,
+  // impossible for Sim in [0, 1]). The second derivative is the central
+  // difference over +-curvature_step_deg around theta*.
+  double min_similarity = 0.4;
+  double min_curvature = 4.0;
+  double curvature_step_deg = 2.0;
+  // A side needs at least this many points of interest and this many views
+  // besides the reference.
+  int min_points = 20;
+  int min_views = 2;
+
+  // Neighbourhood of the projected line in the reference view (a simple
+  // stand-in for the paper's constrained Delaunay triangulation): a band of
+  // this width (px) on the side, shortened by end_margin_px at both ends,
+  // and clipped where another projected 3D line lies between a point and
+  // the line. Points are kept min_distance_px + ncc_radius off the line so
+  // that no correlation window reaches within min_distance_px of it: pixels
+  // on the line map to themselves for every theta, and a window straddling
+  // the line correlates the other side's texture.
+  double band_width_px = 40.0;
+  double min_distance_px = 2.0;
+  double end_margin_px = 3.0;
+  bool clip_at_other_lines = true;
+
+  // Points of interest: Canny edges of the grey image (0..255 scale, after a
+  // Gaussian blur of poi_blur_sigma px) with a very low threshold, as the
+  // paper asks, at most max_points per side (evenly thinned).
+  double poi_blur_sigma = 1.0;
+  double poi_canny_low = 4.0;
+  double poi_canny_high = 8.0;
+  int max_points = 300;
+
+  // Correlation: NCC on the grey image over a (2 r + 1)^2 window mapped
+  // point by point through the homography.
+  int ncc_radius = 2;
+  // Outlier removal after the coarse sweep: points whose mean squared
+  // correlation over the views at the coarse maximum is below this are
+  // dropped, keeping at least the better half of the points.
+  double outlier_min_score = 0.1;
+
+  // Lines steeper than this (deg from horizontal) have no horizontal side.
+  double max_line_slope_deg = 80.0;
+  // A view sees the line when both projected end points are at least this
+  // far (px) inside the image and in front.
+  double view_margin_px = 4.0;
+};
+
+}  // namespace roofsweep
