@@ -7,8 +7,9 @@
 # ROOFSWEEP_REQUIRE_SHARED is not 1, i.e. not in CI).
 set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
-PY=/usr/bin/python3
-QGIS_PROCESS=/usr/bin/qgis_process.bin
+# Overridable to check the skip/fail paths without uninstalling QGIS.
+PY=${ROOFSWEEP_QGIS_PYTHON:-/usr/bin/python3}
+QGIS_PROCESS=${ROOFSWEEP_QGIS_PROCESS:-/usr/bin/qgis_process.bin}
 
 missing=()
 [[ -x $PY ]] || missing+=("$PY")
@@ -41,6 +42,7 @@ export QT_QPA_PLATFORM=offscreen
 export XDG_RUNTIME_DIR="$WORK/runtime"
 export PYTHONPATH="/usr/share/qgis/python/plugins:$HERE${PYTHONPATH:+:$PYTHONPATH}"
 export ROOFSWEEP_EXE
+export ROOFSWEEP_QGIS_PROCESS="$QGIS_PROCESS"
 export ROOFSWEEP_SHARED_DIR="${ROOFSWEEP_SHARED_DIR:-${ROOFSWEEP_SHARED_DIR_DEFAULT:-}}"
 # Keep the user's own QGIS profile out of it; start_app() makes a temporary one.
 unset QGIS_CUSTOM_CONFIG_PATH QGIS_PLUGINPATH

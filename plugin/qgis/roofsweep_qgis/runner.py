@@ -4,6 +4,7 @@ The provider never computes anything itself: every algorithm is one call of
 the GDAL-style program, so QGIS and the command line give identical results.
 """
 
+import glob
 import os
 import re
 import shutil
@@ -42,8 +43,6 @@ def _setting_value():
 def _build_tree_candidates():
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
     found = []
-    import glob
-
     for pattern in _BUILD_GLOBS:
         for d in glob.glob(os.path.join(root, pattern)):
             exe = os.path.join(d, "plugin", "cli", "roofsweep")

@@ -13,7 +13,7 @@ for p in (PLUGIN_PARENT, "/usr/share/qgis/python/plugins"):
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
-from qgis.core import QgsApplication, QgsProcessingFeedback  # noqa: E402
+from qgis.core import QgsProcessingFeedback  # noqa: E402
 from qgis.testing import start_app  # noqa: E402
 
 QGISAPP = start_app()

@@ -102,6 +102,24 @@ def test_convert_groundtruth_to_gpkg_loads_3d_polygon_layers(tiny_block, tmp_pat
     assert fb.progress_values and fb.progress_values[-1] == 100
 
 
+def test_convert_queues_gpkg_layers_for_loading(tiny_block, tmp_path):
+    from qgis.core import QgsProcessingContext, QgsProject
+
+    res, _ = tiny_block
+    out = str(tmp_path / "loaded.gpkg")
+    fb = RecordingFeedback()
+    context = QgsProcessingContext()
+    context.setProject(QgsProject.instance())
+    context.setFeedback(fb)
+    processing.run("roofsweep:convert", {"INPUT": res["GROUNDTRUTH"], "OUTPUT": out}, context=context, feedback=fb)
+    queued = context.layersToLoadOnCompletion()
+    names = sorted(details.name for details in queued.values())
+    assert names == sorted("loaded " + n for n in CITYMODEL_LAYERS), names
+    for layer_id in queued:
+        lyr = context.temporaryLayerStore().mapLayer(layer_id)
+        assert lyr is not None and lyr.isValid() and lyr.source().startswith(out)
+
+
 @pytest.mark.xfail(reason="roofsweep writes EPSG:25832 promoted to 3D (ellipsoidal height) as a custom "
                           "GeoPackage SRS; QGIS 3.22 shows it as 'ETRS89 / UTM zone 32N' without an authid",
                    strict=False)

@@ -11,7 +11,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PLUGIN_DIR = os.path.normpath(os.path.join(HERE, "..", "roofsweep_qgis"))
 # The Debian wrapper /usr/bin/qgis_process passes --noversioncheck, which
 # 3.22 rejects (qgis/QGIS#57683): call the binary.
-QGIS_PROCESS = "/usr/bin/qgis_process.bin"
+QGIS_PROCESS = os.environ.get("ROOFSWEEP_QGIS_PROCESS", "/usr/bin/qgis_process.bin")
 
 
 @pytest.fixture(scope="module")

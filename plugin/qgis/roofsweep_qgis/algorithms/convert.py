@@ -1,7 +1,5 @@
 """Convert LoD2 model: roofsweep convert."""
 
-import os
-
 from qgis.core import (QgsProcessingOutputMultipleLayers, QgsProcessingParameterBoolean,
                        QgsProcessingParameterCrs, QgsProcessingParameterEnum, QgsProcessingParameterFile,
                        QgsProcessingParameterFileDestination)
