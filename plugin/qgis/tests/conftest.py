@@ -2,6 +2,7 @@
 
 import os
 import sys
+import time
 
 import pytest
 
@@ -42,11 +43,13 @@ class RecordingFeedback(QgsProcessingFeedback):
         self.console = []
         self.commands = []
         self.cancel_at = cancel_at
+        self.cancelled_at = None  # time.monotonic() of the cancel request
         self.progressChanged.connect(self._on_progress)
 
     def _on_progress(self, value):
         self.progress_values.append(value)
-        if self.cancel_at is not None and value >= self.cancel_at:
+        if self.cancel_at is not None and value >= self.cancel_at and not self.isCanceled():
+            self.cancelled_at = time.monotonic()
             self.cancel()
 
     def reportError(self, error, fatalError=False):
