@@ -25,6 +25,10 @@ enum class Pattern {
   kPaint,   // road markings
   kFoliage,
   kBark,
+  kSoil,        // garden beds, bare patches
+  kSolarPanel,  // photovoltaic modules: dark cells in a light frame
+  kGlass,       // roof windows, car windows
+  kMetal,       // car paint, roof-top boxes, manhole covers
 };
 const char* PatternName(Pattern p);
 
@@ -60,6 +64,14 @@ Material PavingMaterial(uint32_t seed);
 Material PaintMaterial(uint32_t seed);
 Material FoliageMaterial(int index, uint32_t seed);
 Material BarkMaterial(uint32_t seed);
+Material SoilMaterial(uint32_t seed);
+Material SolarPanelMaterial(uint32_t seed);
+Material GlassMaterial(uint32_t seed);
+Material CarMaterial(int index, uint32_t seed);  // index wraps over common car colours
+int CarMaterialCount();
+Material MetalMaterial(int index, uint32_t seed);  // 0 roof boxes, 1 cast iron covers
+Material HedgeMaterial(uint32_t seed);
+Material ChimneyMaterial(int index, uint32_t seed);
 
 }  // namespace sim
 }  // namespace roofsweep

@@ -20,20 +20,36 @@ struct SimulationOptions {
   SceneOptions scene;
   CameraLayoutOptions cameras;
   RenderOptions render;
+  // With a fixed flight plan (strips and images_per_strip > 0), set the
+  // scene extent to the ground the images cover, so that every image is
+  // built up to its borders (the town is generated where the cameras look).
+  bool fit_scene_to_flight = true;
 };
 
-// Presets:
+// Ground rectangle (x, y extent, m) the images of a fixed nadir flight plan
+// cover (their union, without attitude noise).
+Eigen::Vector2d FlightCoverage(const CameraLayoutOptions& cameras);
+
+// The scene options Simulate() uses: with fit_scene_to_flight and a fixed
+// plan, the extent is the flight's coverage and buildings are only placed
+// where at least two of the (noisy) views see them whole.
+SceneOptions FitSceneToFlight(const SimulationOptions& options);
+
+// Presets (the scene is generated over the ground the flight covers, so
+// images are built up to their borders; building counts are upper bounds):
 //  easy       no noise, no blur beyond 0.4 px, no haze, hard sun, no shadows,
-//             no trees, every roof face its own material tone; 4 views.
-//  realistic  the default for reported figures: ~45 buildings on 200 x 200 m,
-//             8 cm GSD, 70/40 % overlap,
-//             sun 40 deg, shadows, trees, sensor noise, PSF 0.6 px,
-//             vignetting, strip colour differences, 1 deg attitude noise.
-//  hard       hazy low sun contrast (more sky light), 15 % isoluminant roofs
-//             raised to 30 %, roof colours pulled to the ground colour,
-//             more trees, strong noise, 60/25 % overlap (wide baseline).
-//  bench      realistic at 6 views (2 strips x 3) of 2048 x 2048, 6 cm GSD,
-//             30 buildings on 180 x 180 m.
+//             no trees, no roof objects, every roof face its own material
+//             tone; 4 views.
+//  realistic  the default for reported figures: 2 strips x 4 views at 5 cm
+//             GSD, 80/60 % overlap (about 165 x 145 m, up to 80 buildings),
+//             sun 40 deg with soft shadows, trees, cars, roof objects,
+//             sensor noise, PSF 0.6 px, haze 5 %, vignetting, strip colour
+//             differences, 1 deg attitude noise.
+//  hard       hazy, flat light (more sky than sun), 30 % isoluminant roofs,
+//             roof colours pulled to the ground colour, more trees, strong
+//             noise, 60/25 % overlap (wide baseline, larger area).
+//  bench      realistic at 6 views (2 strips x 3) of 2048 x 2048, up to 60
+//             buildings on about 143 x 143 m.
 // Throws roofsweep::Error for an unknown name.
 SimulationOptions SimulationPreset(const std::string& name);
 std::vector<std::string> SimulationPresetNames();

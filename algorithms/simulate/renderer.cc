@@ -12,6 +12,7 @@
 
 #include "algorithms/core/error.h"
 #include "algorithms/simulate/bvh.h"
+#include "algorithms/simulate/ground_index.h"
 #include "algorithms/simulate/noise.h"
 #include "algorithms/simulate/random.h"
 #include "algorithms/simulate/triangulate.h"
@@ -23,53 +24,6 @@ namespace {
 using V3 = Eigen::Vector3d;
 using V3f = Eigen::Vector3f;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Uniform grid over the ground regions so a sample tests a few regions
-// instead of all of them.
-class GroundIndex {
- public:
-  void Build(const GroundLayout& g, const Eigen::Vector4d& area) {
-    layout_ = &g;
-    const double margin = 400;
-    x0_ = area[0] - margin, y0_ = area[1] - margin;
-    nx_ = static_cast<int>(std::ceil((area[2] - area[0] + 2 * margin) / kCell));
-    ny_ = static_cast<int>(std::ceil((area[3] - area[1] + 2 * margin) / kCell));
-    cells_.assign(static_cast<size_t>(nx_) * ny_, {});
-    for (size_t r = 0; r < g.regions.size(); ++r) {
-      const GroundRegion& reg = g.regions[r];
-      const Eigen::Vector2d n(-reg.axis.y(), reg.axis.x());
-      const Eigen::Vector2d ext =
-          (reg.half_size.x() * reg.axis).cwiseAbs() + (reg.half_size.y() * n).cwiseAbs();
-      const int cx0 =
-          std::max(0, static_cast<int>(std::floor((reg.center.x() - ext.x() - x0_) / kCell)));
-      const int cx1 =
-          std::min(nx_ - 1, static_cast<int>(std::floor((reg.center.x() + ext.x() - x0_) / kCell)));
-      const int cy0 =
-          std::max(0, static_cast<int>(std::floor((reg.center.y() - ext.y() - y0_) / kCell)));
-      const int cy1 =
-          std::min(ny_ - 1, static_cast<int>(std::floor((reg.center.y() + ext.y() - y0_) / kCell)));
-      for (int cy = cy0; cy <= cy1; ++cy)
-        for (int cx = cx0; cx <= cx1; ++cx)
-          cells_[static_cast<size_t>(cy) * nx_ + cx].push_back(static_cast<int>(r));
-    }
-  }
-  int MaterialAt(const Eigen::Vector2d& p) const {
-    const int cx = static_cast<int>(std::floor((p.x() - x0_) / kCell));
-    const int cy = static_cast<int>(std::floor((p.y() - y0_) / kCell));
-    if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) return layout_->MaterialAt(p);
-    const auto& list = cells_[static_cast<size_t>(cy) * nx_ + cx];
-    for (auto it = list.rbegin(); it != list.rend(); ++it)
-      if (layout_->regions[*it].Contains(p)) return layout_->regions[*it].material;
-    return layout_->base_material;
-  }
-
- private:
-  static constexpr double kCell = 4.0;
-  const GroundLayout* layout_ = nullptr;
-  double x0_ = 0, y0_ = 0;
-  int nx_ = 0, ny_ = 0;
-  std::vector<std::vector<int>> cells_;
-};
 
 struct CrownShape {
   V3 centre;
@@ -129,7 +83,9 @@ struct Renderer::Impl {
   std::vector<FaceInfo> faces;
   std::vector<CrownShape> crowns;
   GroundIndex ground;
-  V3 sun;
+  V3 sun, sun_u, sun_v;   // direction to the sun and two axes across it
+  double sun_radius = 0;  // rad
+  double top_z = 0;       // highest vertex of the scene
   uint32_t ground_seed = 0;
 
   void AddPolygonFace(FaceInfo f, const Polygon3& poly, std::vector<Bvh::Triangle>& tris) {
@@ -231,6 +187,39 @@ struct Renderer::Impl {
     }
   }
 
+  // Six planar faces of an oriented box.
+  void AddProp(int pi, std::vector<Bvh::Triangle>& tris) {
+    const Prop& p = scene.props[pi];
+    if (p.material < 0 || p.material >= static_cast<int>(scene.materials.size()))
+      throw Error("simulate: prop material index out of range");
+    for (int axis = 0; axis < 3; ++axis)
+      for (int sign : {-1, 1}) {
+        const V3 n = sign * p.axes.col(axis);
+        const V3 a = p.axes.col((axis + 1) % 3) * p.half[(axis + 1) % 3];
+        const V3 b = p.axes.col((axis + 2) % 3) * p.half[(axis + 2) % 3];
+        const V3 c = p.center + p.half[axis] * n;
+        Polygon3 poly;
+        // Counter-clockwise seen from outside (a x b points along +axis).
+        if (sign > 0)
+          poly.exterior = {c - a - b, c + a - b, c + a + b, c - a + b};
+        else
+          poly.exterior = {c - a - b, c - a + b, c + a + b, c + a - b};
+        FaceInfo f;
+        f.kind = FaceKind::kProp;
+        f.prop = pi;
+        f.material = p.material;
+        f.seed = p.seed + static_cast<uint32_t>(axis * 2 + (sign > 0));
+        AddPolygonFace(f, poly, tris);
+        if (!faces.empty() && faces.back().prop == pi && axis == 2 &&
+            p.kind == PropKind::kSolarPanel) {
+          // Texture frame of the panel face along the panel's own axes.
+          faces.back().u_axis = p.axes.col(0);
+          faces.back().v_axis = p.axes.col(1);
+          faces.back().origin = p.center - p.half[0] * p.axes.col(0) - p.half[1] * p.axes.col(1);
+        }
+      }
+  }
+
   void Build() {
     if (opt.supersampling < 1 || opt.supersampling > 8)
       throw Error("simulate: supersampling must be in 1..8");
@@ -238,6 +227,9 @@ struct Renderer::Impl {
       throw Error("simulate: scene has no materials for some buildings");
     const double az = opt.sun_azimuth_deg * M_PI / 180, el = opt.sun_elevation_deg * M_PI / 180;
     sun = V3(std::sin(az) * std::cos(el), std::cos(az) * std::cos(el), std::sin(el));
+    sun_u = sun.cross(V3::UnitZ()).normalized();
+    sun_v = sun.cross(sun_u);
+    sun_radius = std::max(0.0, opt.sun_radius_deg) * M_PI / 180;
     FaceInfo terrain;
     terrain.kind = FaceKind::kTerrain;
     terrain.normal = V3::UnitZ();
@@ -271,6 +263,10 @@ struct Renderer::Impl {
       }
     }
     for (size_t ti = 0; ti < scene.trees.size(); ++ti) AddTree(static_cast<int>(ti), tris);
+    for (size_t pi = 0; pi < scene.props.size(); ++pi) AddProp(static_cast<int>(pi), tris);
+    top_z = scene.ground.z;
+    for (const Bvh::Triangle& t : tris)
+      top_z = std::max({top_z, double(t.a.z()), double(t.b.z()), double(t.c.z())});
     bvh.Build(std::move(tris));
     ground.Build(scene.ground, scene.area);
   }
@@ -305,7 +301,7 @@ struct Renderer::Impl {
 
   // Linear radiance seen along d from o; `pixel_angle` is the angular size
   // of one sample (rad), for texture filtering.
-  V3f Shade(const V3& o, const V3& d, double pixel_angle) const {
+  V3f Shade(const V3& o, const V3& d, double pixel_angle, uint64_t rnd) const {
     const Hit h = Trace(o, d);
     if (h.face < 0) return opt.haze_rgb;  // sky (obliques near the horizon)
     const FaceInfo& f = faces[h.face];
@@ -356,8 +352,15 @@ struct Renderer::Impl {
     if (ns > 0) {
       bool lit = true;
       if (opt.shadows) {
+        // A random point of the sun disc (uniform in the disc).
+        const double r = sun_radius * std::sqrt(ToUnit(Mix64(rnd ^ 0x5a5a))),
+                     a = 6.283185307179586 * ToUnit(Mix64(rnd ^ 0xa5a5));
+        const V3 to_sun = (sun + r * std::cos(a) * sun_u + r * std::sin(a) * sun_v).normalized();
         const V3 start = h.p + 0.01 * (f.kind == FaceKind::kTreeCrown ? sun : n);
-        lit = !bvh.Occluded(start.cast<float>(), sun.cast<float>(), 0.0f, 1e5f);
+        // Nothing stands above top_z: the ray can stop there.
+        const float t_max =
+            to_sun.z() > 1e-6 ? static_cast<float>((top_z - start.z()) / to_sun.z()) + 0.01f : 1e5f;
+        lit = t_max <= 0 || !bvh.Occluded(start.cast<float>(), to_sun.cast<float>(), 0.0f, t_max);
       }
       if (lit) light += opt.sun_rgb * static_cast<float>(ns);
     }
@@ -393,7 +396,7 @@ struct Renderer::Impl {
                                   const double jy = ss == 1 ? 0.5 : (sy + ToUnit(Mix64(h))) / ss;
                                   const Eigen::Vector2d nrm = rays(x + jx, y + jy);
                                   const V3 d = (Rt * V3(nrm.x(), nrm.y(), 1.0)).normalized();
-                                  sum += Shade(pose.C, d, pixel_angle);
+                                  sum += Shade(pose.C, d, pixel_angle, h);
                                 }
                               sum /= static_cast<float>(ss * ss);
                               row[x] = cv::Vec3f(sum.x(), sum.y(), sum.z());

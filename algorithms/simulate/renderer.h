@@ -23,6 +23,10 @@ struct RenderOptions {
   Eigen::Vector3f sun_rgb = Eigen::Vector3f(1.00f, 0.96f, 0.90f);  // direct irradiance
   Eigen::Vector3f sky_rgb = Eigen::Vector3f(0.26f, 0.30f, 0.36f);  // diffuse sky irradiance
   bool shadows = true;                                             // cast shadows (shadow rays)
+  // Angular radius of the sun disc (deg): each sample's shadow ray aims at a
+  // random point of the disc, so shadows get a penumbra (0.27 = the real sun;
+  // forward scattering in haze widens it).
+  double sun_radius_deg = 0.27;
   double exposure = 1.0;
   // Atmospheric veil: output = (1 - haze) * signal + haze * haze_rgb.
   double haze = 0.03;
@@ -36,7 +40,16 @@ struct RenderOptions {
 };
 
 // What a pixel shows, for the face-id map.
-enum class FaceKind { kTerrain, kRoof, kWall, kGroundSurface, kClosure, kTreeCrown, kTreeTrunk };
+enum class FaceKind {
+  kTerrain,
+  kRoof,
+  kWall,
+  kGroundSurface,
+  kClosure,
+  kTreeCrown,
+  kTreeTrunk,
+  kProp  // car, hedge, chimney, solar panel, ... (Scene::props; not ground truth)
+};
 
 struct FaceInfo {
   FaceKind kind = FaceKind::kTerrain;
@@ -44,6 +57,7 @@ struct FaceInfo {
   int surface = -1;   // index into Building::surfaces
   int polygon = -1;   // index into Surface::polygons
   int tree = -1;      // index into Scene::trees
+  int prop = -1;      // index into Scene::props
   int material = -1;
   // Plane n·X + d = 0 (planar faces), texture frame (u horizontal, v down
   // the slope), texture seed.

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
+#include "algorithms/geometry/camera.h"
+#include "algorithms/geometry/view.h"
 #include "algorithms/simulate/materials.h"
 #include "algorithms/simulate/scene_truth.h"
 
@@ -44,8 +46,26 @@ struct GroundLayout {
   int MaterialAt(const Eigen::Vector2d& p) const;  // linear scan; renderer indexes it
 };
 
+// Small objects that are not LoD2 buildings: cars, hedges, chimneys, solar
+// panels, roof windows, roof-top boxes. They occlude and cast shadows but are
+// NOT part of the ground truth (clutter the pipeline must ignore); roof
+// objects stand on roof planes without changing them.
+enum class PropKind { kCar, kHedge, kChimney, kSolarPanel, kSkylight, kRoofBox };
+const char* PropKindName(PropKind k);
+
+// An oriented box: centre, unit axes (columns of `axes`), half extents.
+struct Prop {
+  PropKind kind = PropKind::kCar;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5);
+  int material = -1;
+  uint32_t seed = 1;
+};
+
 struct Scene {
   CityModel city;
+  std::vector<Prop> props;
   std::vector<Material> materials;
   // Material of every surface: surface_materials[building][surface].
   std::vector<std::vector<int>> surface_materials;
@@ -57,18 +77,27 @@ struct Scene {
 struct SceneOptions {
   double extent_x = 160;  // m, area centred on the origin
   double extent_y = 160;
+  // Upper bound on the number of buildings. Lots are filled from the centre
+  // of the area outwards; lots beyond the bound stay gardens. Sheds and
+  // garages are buildings too (they are LoD2 solids in the truth).
   int building_count = 30;
   double min_length = 6;  // footprint length range, m
   double max_length = 40;
   // Relative frequency of each RoofShape (flat, shed, gable, hip, half-hip,
   // pyramid, mansard, L, T).
   std::array<double, 9> shape_weights = {2, 1, 4, 2, 1, 0.7, 0.7, 1.2, 0.8};
-  // Share of placement attempts that put a terraced row of 2-4 houses with
-  // shared walls (party walls) instead of a detached building.
-  double terrace_fraction = 0.25;
   double aligned_fraction = 0.8;  // buildings parallel to the streets (else any yaw)
   int tree_count = 20;
-  double street_spacing = 75;  // m between street axes
+  // Street grid: axes of the streets along x are street_spacing apart (the
+  // block depth: two rows of lots back to back), those along y
+  // block_length apart.
+  // Each gap between streets along x is drawn from 0.8..1.2 x street_spacing.
+  double street_spacing = 56;
+  double block_length = 90;
+  // Relative frequency of block types: detached houses, terraced rows,
+  // apartment bars, urban perimeter rows (tall attached houses), commercial
+  // halls with parking.
+  std::array<double, 5> block_weights = {3, 2.5, 1.2, 1.5, 0.8};
   double street_width = 7;
   double sidewalk_width = 2;
   // Probability that all faces of a roof share one material (the hard case
@@ -81,10 +110,23 @@ struct SceneOptions {
   // (low contrast scenes).
   double roof_contrast = 1.0;
   double ground_z = 0;
+  // Cars, hedges, garden beds, paths, drains (clutter on the ground).
+  bool clutter = true;
+  // Chimneys, solar panels, roof windows, roof-top boxes (not roof planes).
+  bool roof_objects = true;
+  // When given, a building is only placed if its whole footprint, at ground
+  // and at roof top, lies inside at least `min_views` of these images (so
+  // every building of the truth can be reconstructed); elsewhere its lot
+  // stays a garden.
+  std::vector<std::pair<Camera, Pose>> visibility_views;
+  int min_views = 2;
 };
 
-// A random town quarter: streets with markings and sidewalks, detached
-// buildings of every roof shape, terraces sharing walls, trees, yards.
+// A random town quarter filling the area: a street grid with markings and
+// sidewalks; blocks of detached houses with garages and sheds, terraced
+// rows sharing walls, apartment bars, tall urban rows, commercial halls with
+// parking lots; front gardens, driveways, hedges, cars, trees (some over
+// roofs), roof objects.
 Scene GenerateScene(const SceneOptions& options, uint64_t seed);
 
 // A scene around given buildings (e.g. a real CityGML LoD2 model read by
