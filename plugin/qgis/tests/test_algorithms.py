@@ -228,6 +228,16 @@ def test_import_and_info_on_ngi_block(shared_dir, tmp_path, roofsweep_exe):
         assert len(json.load(f)["images"]) == 4
 
 
+def test_import_folder_format_vgg_merton1(shared_dir, tmp_path):
+    merton = shared_or_skip(shared_dir, "data/multiview/oxford-vgg/merton1")
+    block = str(tmp_path / "merton1.json")
+    processing.run("roofsweep:import", {"FORMAT": 5, "SOURCE_FOLDER": merton, "OUTPUT": block},
+                   feedback=RecordingFeedback())
+    info = processing.run("roofsweep:info", {"BLOCK": block}, feedback=RecordingFeedback())
+    assert info["IMAGES"] == 3
+    assert info["MEAN_GSD"] > 0
+
+
 def test_import_needs_exactly_one_source(tmp_path):
     with pytest.raises(QgsProcessingException, match="exactly one"):
         processing.run("roofsweep:import", {"FORMAT": 0, "OUTPUT": str(tmp_path / "b.json")},
