@@ -4,6 +4,7 @@ The provider never computes anything itself: every algorithm is one call of
 the GDAL-style program, so QGIS and the command line give identical results.
 """
 
+import codecs
 import glob
 import os
 import re
@@ -185,12 +186,15 @@ class ProgressParser:
 def _pump(stream, queue, tag, chunked):
     try:
         if chunked:
+            # Progress has no newline until the end: read what is there, and
+            # decode incrementally so a UTF-8 character split by a read survives.
             fd = stream.fileno()
+            decoder = codecs.getincrementaldecoder("utf-8")("replace")
             while True:
                 data = os.read(fd, 4096)
                 if not data:
                     break
-                queue.put((tag, data.decode("utf-8", "replace")))
+                queue.put((tag, decoder.decode(data)))
         else:
             for line in iter(stream.readline, b""):
                 queue.put((tag, line.decode("utf-8", "replace").rstrip("\r\n")))
@@ -256,7 +260,7 @@ def run(exe, args, feedback, capture_stdout=False, cwd=None):
                 if _ERROR_LINE.match(data):
                     feedback.reportError(data, False)
                 elif _WARNING_LINE.match(data):
-                    feedback.pushWarning(data) if hasattr(feedback, "pushWarning") else feedback.pushInfo(data)
+                    feedback.pushWarning(data)
                 elif data.strip():
                     feedback.pushInfo(data)
     rc = proc.wait()
