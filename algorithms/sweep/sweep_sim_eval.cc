@@ -1,0 +1,158 @@
+// Judges the half-plane sweep alone on a simulated block: the true 3D roof
+// edges are the input lines, and each line side's result is compared with
+// the true roof face attached there (if any).
+//
+//   rs_sweep_sim_eval [preset=realistic] [seed=1]
+//
+// Prints acceptance and the angle error (median, 90th percentile) per roof
+// material pattern and overall.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "algorithms/simulate/presets.h"
+#include "algorithms/simulate/scene_truth.h"
+#include "algorithms/sweep/half_plane_family.h"
+#include "algorithms/sweep/sweep_half_planes.h"
+
+using namespace roofsweep;
+
+namespace {
+
+bool InsideXY(const std::vector<Eigen::Vector3d>& ring, const Eigen::Vector3d& p) {
+  bool in = false;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const auto &a = ring[i], &b = ring[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+
+bool InsidePolygonXY(const Polygon3& poly, const Eigen::Vector3d& p) {
+  if (!InsideXY(poly.exterior, p)) return false;
+  for (const auto& h : poly.holes)
+    if (InsideXY(h, p)) return false;
+  return true;
+}
+
+double Percentile(std::vector<double> v, double q) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<size_t>(std::min<double>(v.size() - 1, std::floor(q * v.size())))];
+}
+
+struct Tally {
+  int sides = 0, accepted = 0;
+  std::vector<double> errors;  // accepted sides, |theta - truth| deg
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string preset = argc > 1 ? argv[1] : "realistic";
+  sim::SimulationOptions so = sim::SimulationPreset(preset);
+  if (argc > 2) so.seed = std::stoull(argv[2]);
+  NullProgress progress;
+  auto t0 = std::chrono::steady_clock::now();
+  const sim::SimulationResult r = sim::Simulate(so, progress);
+  auto t1 = std::chrono::steady_clock::now();
+
+  Block block;
+  block.source = "simulated " + preset;
+  std::vector<cv::Mat> images;
+  for (size_t i = 0; i < r.views.size(); ++i) {
+    block.cameras.push_back(r.views[i].camera);
+    View v;
+    v.name = r.views[i].name;
+    v.camera = static_cast<int>(i);
+    v.pose = r.views[i].pose;
+    block.views.push_back(v);
+    cv::Mat f;
+    r.images[i].convertTo(f, CV_32FC3, 1.0 / 255.0);
+    images.push_back(f);
+  }
+  std::vector<SweepLine> lines;
+  std::vector<const sim::TrueEdge*> edges;
+  for (const sim::TrueEdge& e : r.truth.edges) {
+    if (!sim::IsRoofEdge(e.kind)) continue;
+    lines.push_back({Segment3{e.a, e.b}, {}});
+    edges.push_back(&e);
+  }
+  const std::vector<HalfPlane> result =
+      SweepHalfPlanes(block, images, lines, SweepOptions(), progress);
+  auto t2 = std::chrono::steady_clock::now();
+
+  std::map<std::string, Tally> by_pattern;
+  Tally all, free_sides;
+  std::map<std::string, int> reasons;
+  int unseen = 0;
+  for (const HalfPlane& h : result) {
+    if (h.reference_view < 0) {
+      ++unseen;
+      continue;
+    }
+    const sim::TrueEdge& e = *edges[h.line];
+    const auto family = HalfPlaneFamily::Make(lines[h.line].segment, h.side);
+    if (!family) continue;
+    // The true face on this side: a roof plane of the building containing
+    // the edge and covering a point 0.3 m into the side.
+    const sim::RoofPlane* face = nullptr;
+    double truth = 0;
+    for (const sim::RoofPlane& rp : r.truth.roof_planes) {
+      if (rp.building != e.building) continue;
+      const Eigen::Vector3d n = rp.plane.head<3>();
+      if (std::abs(n.dot(e.a) + rp.plane(3)) > 0.05 || std::abs(n.dot(e.b) + rp.plane(3)) > 0.05)
+        continue;
+      const double theta = family->AngleOfNormal(n);
+      const Eigen::Vector3d p = family->line().At(0.5) + 0.3 * family->Direction(theta);
+      if (!InsidePolygonXY(rp.polygon, p)) continue;
+      face = &rp;
+      truth = theta * 180 / M_PI;
+      break;
+    }
+    if (!face) {
+      ++free_sides.sides;
+      free_sides.accepted += h.accepted;
+      continue;
+    }
+    const int m = r.scene.surface_materials.at(face->building).at(face->surface);
+    const std::string pattern = sim::PatternName(r.scene.materials.at(m).pattern);
+    for (Tally* t : {&by_pattern[pattern], &all}) {
+      ++t->sides;
+      if (h.accepted) {
+        ++t->accepted;
+        t->errors.push_back(std::abs(h.theta_deg - truth));
+      }
+    }
+    if (!h.accepted) ++reasons[h.reason.substr(0, h.reason.find_first_of("(0123456789"))];
+  }
+  std::printf("preset %s seed %llu: %zu views, %zu roof edges, simulate %.1f s, sweep %.1f s\n",
+              preset.c_str(), static_cast<unsigned long long>(so.seed), block.views.size(),
+              lines.size(), std::chrono::duration<double>(t1 - t0).count(),
+              std::chrono::duration<double>(t2 - t1).count());
+  std::printf("%-14s %6s %9s %11s %11s %8s\n", "face pattern", "sides", "accepted", "median err",
+              "p90 err", "<=2 deg");
+  auto row = [](const std::string& name, const Tally& t) {
+    const double within =
+        t.errors.empty() ? 0.0 : std::count_if(t.errors.begin(), t.errors.end(), [](double e) {
+                                   return e <= 2.0;
+                                 }) / static_cast<double>(t.errors.size());
+    std::printf("%-14s %6d %8.1f%% %10.2f° %10.2f° %7.1f%%\n", name.c_str(), t.sides,
+                t.sides ? 100.0 * t.accepted / t.sides : 0.0, Percentile(t.errors, 0.5),
+                Percentile(t.errors, 0.9), 100 * within);
+  };
+  for (const auto& [name, t] : by_pattern) row(name, t);
+  row("all faces", all);
+  std::printf("sides without a roof face: %d, accepted %d (%.1f%%); sides seen by no view: %d\n",
+              free_sides.sides, free_sides.accepted,
+              free_sides.sides ? 100.0 * free_sides.accepted / free_sides.sides : 0.0, unseen);
+  std::printf("rejections on sides with a face:\n");
+  for (const auto& [reason, n] : reasons) std::printf("  %5d  %s\n", n, reason.c_str());
+  return 0;
+}
