@@ -73,14 +73,15 @@ int main(int argc, char** argv) {
   }
 
   roofsweep::cli::Context ctx;
-  roofsweep::NullProgress quiet;
   roofsweep::cli::GdalTermProgress term;
   ctx.quiet = std::find(args.begin(), args.end(), "-q") != args.end() ||
               std::find(args.begin(), args.end(), "-quiet") != args.end();
   args.erase(std::remove_if(args.begin(), args.end(),
                             [](const std::string& a) { return a == "-q" || a == "-quiet"; }),
              args.end());
-  ctx.progress = ctx.quiet ? static_cast<roofsweep::Progress*>(&quiet) : &term;
+  roofsweep::cli::InterruptibleProgress interruptible(ctx.quiet ? nullptr : &term);
+  ctx.progress = &interruptible;
+  roofsweep::cli::InstallInterruptHandler();
   try {
     return it->run(args, ctx);
   } catch (const roofsweep::cli::UsageError& e) {

@@ -191,8 +191,6 @@ def test_cancel_terminates_the_program(tmp_path):
     assert reaction < 8, reaction
 
 
-@pytest.mark.xfail(reason="roofsweep has no SIGTERM handler: a terminated simulate leaves its "
-                          "temporary folder .<name>.tmp<pid> behind (plugin/cli/main.cc)", strict=False)
 def test_cancel_leaves_no_temporary_folder(tmp_path):
     out = tmp_path / "cancelled"
     with pytest.raises(QgsProcessingException, match="cancelled"):
