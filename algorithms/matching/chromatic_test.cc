@@ -39,19 +39,17 @@ ChromaticThresholds InitThresholds(const std::vector<std::pair<double, double>>&
                                    double factor) {
   std::vector<double> m, c;
   for (const auto& [tm, tc] : pairs) {
-    if (tm > kChi2_2_999 && tc > kChi2_3_999) continue;
-    // A pair significant in one test still tells about the other.
-    if (tm <= kChi2_2_999) m.push_back(tm);
-    if (tc <= kChi2_3_999) c.push_back(tc);
+    m.push_back(tm);
+    c.push_back(tc);
   }
   ChromaticThresholds t;
   t.samples = static_cast<int>(pairs.size());
-  // With too few remaining values the chi2 0.001 quantiles themselves.
-  t.mean = m.size() >= 5 ? factor * Median(m) : kChi2_2_999;
-  t.cov = c.size() >= 5 ? factor * Median(c) : kChi2_3_999;
-  // Never stricter than the conventional 5 % level.
-  t.mean = std::max(t.mean, 5.991);
-  t.cov = std::max(t.cov, 7.815);
+  // Too few samples: the chi2 0.001 quantiles times the factor.
+  t.mean = factor * (m.size() >= 5 ? Median(m) : kChi2_2_999);
+  t.cov = factor * (c.size() >= 5 ? Median(c) : kChi2_3_999);
+  // Never stricter than the conventional 0.1 % level.
+  t.mean = std::max(t.mean, kChi2_2_999);
+  t.cov = std::max(t.cov, kChi2_3_999);
   return t;
 }
 

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -37,7 +38,7 @@ std::vector<std::vector<int>> TruthLabels(const ViewFeatures& v,
                                           const std::vector<Segment3>& edges,
                                           double min_length) {
   std::vector<std::vector<int>> labels(v.ideal.size());
-  const double tol = 1.5, cos_max = std::cos(3 * kDeg);
+  const double tol = std::getenv("ROOFSWEEP_LABEL_DEBUG") ? 5.0 : 1.5, cos_max = std::cos(3 * kDeg);
   for (size_t e = 0; e < edges.size(); ++e) {
     const auto a = ProjectIdeal(v, edges[e].a), b = ProjectIdeal(v, edges[e].b);
     if (!a || !b || (*b - *a).norm() < 2) continue;
@@ -54,6 +55,8 @@ std::vector<std::vector<int>> TruthLabels(const ViewFeatures& v,
       const double u = (s.Midpoint() - pe.p0).dot(d);
       if (u < 0 || u > len) continue;
       labels[id].push_back(static_cast<int>(e));
+      if (std::getenv("ROOFSWEEP_LABEL_DEBUG") && v.view == 0)
+        std::fprintf(stderr, "L %.3f %.3f\n", (s.p0 - pe.p0).dot(n), (s.p1 - pe.p0).dot(n));
     }
   }
   return labels;
@@ -230,19 +233,39 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       std::mt19937 rng(o.seed + static_cast<unsigned>(i * 1000 + j));
       std::shuffle(with.begin(), with.end(), rng);
       with.resize(std::min<size_t>(with.size(), static_cast<size_t>(o.init_segments)));
+      // Per random segment, the most similar candidate side: the obviously
+      // wrong combinations are left out by keeping only the best one, which
+      // is the correct match for most segments (see InitThresholds).
       std::vector<std::pair<double, double>> stats;
-      for (int s : with)
+      for (int s : with) {
+        double bm = 1e300, bc = 1e300;
         for (const PairHypothesis& h : cand[s])
           for (int side = 0; side < 2; ++side) {
             const SideColour& a = views[i].sides[s][side];
             const SideColour& b = views[j].sides[h.sj][side_j(h, side)];
-            if (a.valid && b.valid)
-              stats.emplace_back(MeanStatistic(a, b, o.max_test_pixels),
-                                 CovStatistic(a, b, o.max_test_pixels));
+            if (!a.valid || !b.valid) continue;
+            bm = std::min(bm, MeanStatistic(a, b, o.max_test_pixels));
+            bc = std::min(bc, CovStatistic(a, b, o.max_test_pixels));
           }
+        if (bm < 1e299) stats.emplace_back(bm, bc);
+      }
       thr = InitThresholds(stats, o.threshold_factor);
     }
 
+    if (truth && std::getenv("ROOFSWEEP_MATCH_DEBUG")) {
+      static std::FILE* f = std::fopen(std::getenv("ROOFSWEEP_MATCH_DEBUG"), "w");
+      for (int s = 0; s < ns; ++s)
+        for (const PairHypothesis& h : cand[s]) {
+          const int t = Shares(labels[i][s], labels[j][h.sj]);
+          for (int side = 0; side < 2; ++side) {
+            const SideColour& a = views[i].sides[s][side];
+            const SideColour& b = views[j].sides[h.sj][side_j(h, side)];
+            if (!a.valid || !b.valid) continue;
+            std::fprintf(f, "%d %d %d %d %d %g %g\n", i, j, s, t, side, MeanStatistic(a, b, o.max_test_pixels) / thr.mean,
+                         CovStatistic(a, b, o.max_test_pixels) / thr.cov);
+          }
+        }
+    }
     std::vector<std::array<long long, 3>> counts(ns, {0, 0, 0});
     std::vector<std::array<long long, 3>> tcounts(ns, {0, 0, 0});
     tbb::parallel_for(0, ns, [&](int s) {
@@ -286,8 +309,11 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       // All true pairs of this view pair, whatever the stages did.
       for (int s = 0; s < ns; ++s) {
         if (labels[i][s].empty()) continue;
+        if (skipped[s] || views[i].ideal[s].Length() < o.min_length) continue;
         for (size_t t = 0; t < views[j].ideal.size(); ++t)
-          if (!labels[j][t].empty() && Shares(labels[i][s], labels[j][t])) ++res.funnel.true_all;
+          if (!labels[j][t].empty() && Shares(labels[i][s], labels[j][t]) &&
+              EpipolarAngle(g.e_j, views[j].ideal[t]) >= o.min_epipolar_angle)
+            ++res.funnel.true_all;
       }
     }
   }
@@ -309,7 +335,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   tbb::parallel_for(size_t{0}, hyps.size(), [&](size_t n) {
     Verified& vh = hyps[n];
     const PairHypothesis& h = vh.h;
-    int seeing = 0, supporting = 0;
+    int seeing = 0, supporting = 0, gradient_only = 0;
     for (int k = 0; k < nv; ++k) {
       if (k == h.vi || k == h.vj) continue;
       auto a = ProjectIdeal(views[k], h.line.a), b = ProjectIdeal(views[k], h.line.b);
@@ -324,12 +350,19 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       if (sup >= 0) {
         vh.support.emplace_back(k, sup);
         ++supporting;
-      } else if (GradientAlong(views[k], proj) >= o.verify_min_gradient) {
-        ++supporting;
+      } else if (o.verify_min_gradient > 0 &&
+                 GradientAlong(views[k], proj) >= o.verify_min_gradient) {
+        gradient_only += 1;
       }
     }
-    accepted[n] = seeing == 0 || supporting >= std::max(1.0, std::ceil(o.min_support_fraction * seeing));
+    // A detected segment counts fully, a gradient without a segment half.
+    const double support = supporting + 0.5 * gradient_only;
+    accepted[n] = seeing == 0 || (supporting >= o.min_support_segments &&
+                                  support >= std::max(1.0, o.min_support_fraction * seeing));
     vh.h.score += static_cast<double>(vh.support.size());
+    if (std::getenv("ROOFSWEEP_VERIFY_DEBUG"))
+      std::fprintf(stderr, "V %d %d %d %d %d %.2f\n", h.true_pair, seeing, supporting, gradient_only,
+                   h.vj - h.vi, h.score);
   });
   std::vector<Verified> kept;
   for (size_t n = 0; n < hyps.size(); ++n)
@@ -472,7 +505,7 @@ std::string FormatFunnel(const MatchFunnel& f) {
     }
     out << buf;
   };
-  if (t) row("all segment pairs (truth)", -1, f.true_all);
+  if (t) row("eligible true pairs", -1, f.true_all);
   row("geometric", f.geometric, f.true_geometric);
   row("chromatic (integrated)", f.chromatic, f.true_chromatic);
   row("chromatic correlation", f.correlation, f.true_correlation);

@@ -36,7 +36,7 @@ struct MatchOptions {
   // significance 0.001 (chi2 quantiles 13.82 for 2 dof, 16.27 for 3 dof).
   double mean_threshold = -1;
   double cov_threshold = -1;
-  int init_segments = 10;
+  int init_segments = 30;
   // The median alone would reject half of the correct pairs; the factor
   // turns it into a threshold (measured on the simulated blocks, see report).
   double threshold_factor = 8.0;
@@ -64,8 +64,11 @@ struct MatchOptions {
   // Where no segment was detected, mean gradient magnitude along the
   // projection (intensity/px, [0,1] images) above this also supports it.
   double verify_min_gradient = 0.03;
-  // Fraction of the other views that see the hypothesis that must support it.
+  // Fraction of the other views that see the hypothesis that must support it
+  // (a detected segment counts 1, a gradient without a segment 0.5), and the
+  // least number of other views with a supporting segment (when any sees it).
   double min_support_fraction = 0.5;
+  int min_support_segments = 1;
   // Projections shorter than this in a view do not count as seeing it.
   double verify_min_length = 10.0;
 

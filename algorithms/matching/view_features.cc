@@ -100,7 +100,16 @@ SideColour RegionColour(const cv::Mat& lab, const std::vector<Eigen::Vector2d>& 
     if (std::abs(c.x() - rl.location) <= options.l_outlier_sigmas * scale)
       ab.emplace_back(c.y(), c.z());
   if (static_cast<int>(ab.size()) < options.min_region_pixels) return sc;
-  const Robust2D r = RobustMcd2D(ab, seed);
+  // A regular subsample keeps the estimator cheap on long segments; the
+  // tests cap n at max_test_pixels anyway.
+  const size_t cap = 250;
+  if (ab.size() > cap) {
+    std::vector<Eigen::Vector2d> sub;
+    sub.reserve(cap);
+    for (size_t k = 0; k < cap; ++k) sub.push_back(ab[k * ab.size() / cap]);
+    ab.swap(sub);
+  }
+  const Robust2D r = RobustMcd2D(ab, seed, 4);
   if (!r.valid) return sc;
   sc.valid = true;
   sc.n = r.inliers;
