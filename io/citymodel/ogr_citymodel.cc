@@ -540,6 +540,13 @@ void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerD
                                       ? wkbMultiLineString25D
                                   : geometry == LayerGeometry::kMultiPolygonZ ? wkbMultiPolygon25D
                                                                               : wkbNone;
+  // GPKG stores "no CRS" as srs_id 0, the undefined GEOGRAPHIC system,
+  // which tools show as lat/lon; 2D layers without a CRS are image or other
+  // Cartesian coordinates, which GDAL maps to srs_id -1 from this name.
+  OGRSpatialReference cartesian;
+  if (!srs && type == wkbLineString && EQUAL(ds->GetDriver()->GetDescription(), "GPKG") &&
+      cartesian.SetFromUserInput("LOCAL_CS[\"Undefined cartesian SRS\"]") == OGRERR_NONE)
+    srs = &cartesian;
   OGRLayer* layer = CreateLayer(ds, layer_name, type, srs, path);
   if (!description.empty()) layer->SetMetadataItem("DESCRIPTION", description.c_str());
   std::map<std::string, OGRFieldType> fields;

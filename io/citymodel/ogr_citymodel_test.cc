@@ -148,6 +148,44 @@ TEST(OgrCityModel, UpdateKeepsOtherLayersAndExtraLayersCanBeAdded) {
   EXPECT_EQ(testing::CountTempFiles(dir), 0);
 }
 
+TEST(OgrCityModel, SeveralTwoDimensionalLayersInOneWrite) {
+  const std::string dir = testing::TempDir("ogr");
+  const std::string path = dir + "/lines.gpkg";
+  LayerFeature seg;
+  seg.lines.push_back({Eigen::Vector3d(1.5, 2.5, 0), Eigen::Vector3d(40.25, 2.5, 0)});
+  seg.reals["length_px"] = 38.75;
+  std::vector<FeatureLayerData> layers(2);
+  layers[0].name = "lines_001";
+  layers[0].geometry = LayerGeometry::kLineString;
+  layers[0].description = "image pixels";
+  layers[0].features = {seg, seg, seg};
+  layers[1].name = "lines_002";
+  layers[1].geometry = LayerGeometry::kLineString;  // empty layer
+  WriteFeatureLayers(path, layers, FeatureLayerOptions{});
+  auto ds = Open(path);
+  ASSERT_TRUE(ds);
+  OGRLayer* l = ds->GetLayerByName("lines_001");
+  ASSERT_NE(l, nullptr);
+  EXPECT_EQ(l->GetGeomType(), wkbLineString);
+  EXPECT_EQ(l->GetFeatureCount(), 3);
+  // No CRS: GPKG's undefined Cartesian system (srs_id -1), not lat/lon.
+  if (const OGRSpatialReference* srs = l->GetSpatialRef()) {
+    EXPECT_FALSE(srs->IsGeographic());
+    EXPECT_FALSE(srs->IsProjected());
+  }
+  ASSERT_NE(l->GetMetadataItem("DESCRIPTION"), nullptr);
+  EXPECT_STREQ(l->GetMetadataItem("DESCRIPTION"), "image pixels");
+  std::unique_ptr<OGRFeature> f(l->GetNextFeature());
+  EXPECT_DOUBLE_EQ(f->GetGeometryRef()->toLineString()->getX(1), 40.25);
+  ASSERT_NE(ds->GetLayerByName("lines_002"), nullptr);
+  EXPECT_EQ(ds->GetLayerByName("lines_002")->GetFeatureCount(), 0);
+  ds.reset();
+  // Refused without overwrite; single-layer formats refuse several layers.
+  EXPECT_THROW(WriteFeatureLayers(path, layers, FeatureLayerOptions{}), Error);
+  EXPECT_THROW(WriteFeatureLayers(dir + "/lines.fgb", layers, FeatureLayerOptions{}), Error);
+  EXPECT_EQ(testing::CountTempFiles(dir), 0);
+}
+
 TEST(OgrCityModel, NotACityModelDatasetIsAClearError) {
   const std::string dir = testing::TempDir("ogr");
   FeatureLayerOptions lo;
