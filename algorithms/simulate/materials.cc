@@ -109,7 +109,7 @@ Eigen::Vector3f EvaluateAlbedo(const Material& m, float u, float v, float footpr
   seed ^= m.seed * 0x9e3779b9u;
   const float s = m.element_size;
   // Large-scale staining common to all patterns.
-  const float stain = FractalNoise(u, v, 0.12f, 3, 0.55f, footprint, seed + 7);
+  const float stain = FractalNoise(u, v, 0.12f, 2, 0.55f, footprint, seed + 7);
   float factor = 1.0f + m.weathering * stain;
   float mix2 = 0.0f;  // share of albedo2
   Eigen::Vector3f tint = Eigen::Vector3f::Ones();
@@ -209,7 +209,7 @@ Eigen::Vector3f EvaluateAlbedo(const Material& m, float u, float v, float footpr
         factor *= 1.0f + 0.06f * Resolve(0.8f, footprint) * ((Floor(lane) & 1) ? 1.0f : -1.0f);
       }
       mix2 = m.secondary *
-             Smooth(-0.1f, 0.6f, FractalNoise(u, v, 0.08f, 4, 0.55f, footprint, seed + 29));
+             Smooth(-0.1f, 0.6f, FractalNoise(u, v, 0.08f, 3, 0.55f, footprint, seed + 29));
       // Worn and bare patches (paths across the lawn, under play areas).
       third = Eigen::Vector3f(0.16f, 0.11f, 0.065f);
       mix3 = 0.85f * Smooth(0.45f, 0.6f, FractalNoise(u, v, 0.25f, 3, 0.55f, footprint, seed + 27));

@@ -25,6 +25,18 @@ using V3 = Eigen::Vector3d;
 using V3f = Eigen::Vector3f;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// 32 points spread evenly over the unit disc (Vogel's sunflower spiral),
+// for sampling the sun disc without trigonometry per sample.
+const std::vector<Eigen::Vector2d> kSunDisc = [] {
+  std::vector<Eigen::Vector2d> p;
+  const int n = 32;
+  for (int i = 0; i < n; ++i) {
+    const double r = std::sqrt((i + 0.5) / n), a = i * 2.399963229728653;
+    p.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  return p;
+}();
+
 struct CrownShape {
   V3 centre;
   V3 radii;
@@ -124,7 +136,8 @@ struct Renderer::Impl {
     crown.seed = tree.seed;
     const int crown_id = static_cast<int>(faces.size());
     faces.push_back(crown);
-    // Icosphere, subdivided twice, with lumpy radii: an irregular crown.
+    // Icosphere, subdivided twice (320 triangles; the shading normal is the
+    // smooth ellipsoid's), with lumpy radii: an irregular crown.
     const double g = (1 + std::sqrt(5.0)) / 2;
     std::vector<V3> v = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
@@ -353,9 +366,9 @@ struct Renderer::Impl {
       bool lit = true;
       if (opt.shadows) {
         // A random point of the sun disc (uniform in the disc).
-        const double r = sun_radius * std::sqrt(ToUnit(Mix64(rnd ^ 0x5a5a))),
-                     a = 6.283185307179586 * ToUnit(Mix64(rnd ^ 0xa5a5));
-        const V3 to_sun = (sun + r * std::cos(a) * sun_u + r * std::sin(a) * sun_v).normalized();
+        const Eigen::Vector2d& q = kSunDisc[Mix64(rnd ^ 0x5a5a) % kSunDisc.size()];
+        const V3 to_sun =
+            (sun + sun_radius * q.x() * sun_u + sun_radius * q.y() * sun_v).normalized();
         const V3 start = h.p + 0.01 * (f.kind == FaceKind::kTreeCrown ? sun : n);
         // Nothing stands above top_z: the ray can stop there.
         const float t_max =
