@@ -160,7 +160,9 @@ Segment2DScores EvaluateSegments2D(const Camera& camera, const Pose& pose,
   }
 
   // Precision.
-  for (const Segment2D& seg : detected) {
+  out.per_segment.resize(detected.size());
+  for (size_t j = 0; j < detected.size(); ++j) {
+    const Segment2D& seg = detected[j];
     const double len = seg.Length();
     if (!(len > 0)) continue;
     const V2 t = (seg.p1 - seg.p0) / len;
@@ -169,7 +171,11 @@ Segment2DScores EvaluateSegments2D(const Camera& camera, const Pose& pose,
     for (int i = 0; i < n; ++i) {
       const V2 q = seg.p0 + ((i + 0.5) / n) * (seg.p1 - seg.p0);
       out.detected_px += w;
-      if (Matches(truth_index, pieces, q, t, o)) out.detected_on_truth_px += w;
+      out.per_segment[j].length_px += w;
+      if (Matches(truth_index, pieces, q, t, o)) {
+        out.detected_on_truth_px += w;
+        out.per_segment[j].covered_px += w;
+      }
     }
   }
   return out;

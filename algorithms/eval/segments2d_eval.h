@@ -70,6 +70,9 @@ struct Segment2DScores {
   // rarely hit by chance at 1.5 px and 5 deg.
   double detected_px = 0;
   double detected_on_truth_px = 0;
+  // Per detected segment (same order as the input): its length and the part
+  // on a true edge, for diagnosing what the false positives are.
+  std::vector<LengthScore> per_segment;
   int segments = 0;
 
   double Recall() const { return roof.Ratio(); }

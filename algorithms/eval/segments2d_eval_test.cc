@@ -94,6 +94,9 @@ TEST(Segments2DEval, HalfCoveredAndNonRoofKinds) {
   EXPECT_NEAR(s.Recall(), 0.51, 0.015);
   EXPECT_NEAR(s.per_kind.at(sim::EdgeKind::kGroundMarking).Ratio(), 1.0, 1e-9);
   EXPECT_NEAR(s.Precision(), 150.0 / 250.0, 1e-9);
+  ASSERT_EQ(s.per_segment.size(), 3u);
+  EXPECT_NEAR(s.per_segment[1].Ratio(), 1.0, 1e-9);
+  EXPECT_DOUBLE_EQ(s.per_segment[2].covered_px, 0.0);
 }
 
 TEST(Segments2DEval, OccludedEdgesAreExcluded) {
