@@ -104,6 +104,8 @@ int Main(int argc, char** argv) {
     const std::string a = argv[i], v = argv[i + 1];
     if (a == "--seeds")
       seeds = ParseList(v);
+    else if (a == "--preset")
+      preset = v;
     else if (a == "--size")
       size = std::atoi(v.c_str());
     else if (a == "--strips")
