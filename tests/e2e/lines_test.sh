@@ -66,6 +66,20 @@ test_lines_writes_one_layer_per_image() {
   fi
 }
 
+test_lines_is_deterministic() {
+  small_block || return
+  "$RS" lines "$SIM" -o "$WORK/a.gpkg" -q && "$RS" lines "$SIM" -o "$WORK/b.gpkg" -q || {
+    fail lines_deterministic "lines failed"
+    return
+  }
+  if diff <(ogrinfo -ro -al "$WORK/a.gpkg" | grep -v 'a.gpkg') \
+    <(ogrinfo -ro -al "$WORK/b.gpkg" | grep -v 'b.gpkg') >/dev/null; then
+    pass lines_deterministic
+  else
+    fail lines_deterministic "two runs differ"
+  fi
+}
+
 test_lines_methods_and_options() {
   small_block || return
   expect_ok lines_dizenzo lines "$SIM" -o "$WORK/dz.gpkg" --method dizenzo --min-length 30 -q || return
