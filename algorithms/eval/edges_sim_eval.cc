@@ -254,6 +254,16 @@ int Main(int argc, char** argv) {
     for (EdgeKind k : seen_kinds) PrintCell(Pct(t.kinds.at(k)));
     std::printf("\n");
   }
+  std::printf(
+      "\ndetected length on no true edge, share of all detected length, by the faces "
+      "3 px either side of the segment midpoint:\n%-8s %10s %10s %10s\n",
+      "method", "tree/prop", "same face", "two faces");
+  for (const std::string& m : methods) {
+    const Totals& tm = totals[m];
+    const double d = std::max(tm.detected, 1e-9);
+    std::printf("%-8s %9.1f%% %9.1f%% %9.1f%%\n", m.c_str(), 100 * tm.false_tree_prop / d,
+                100 * tm.false_in_face / d, 100 * tm.false_between_faces / d);
+  }
   const Totals& t = totals[methods[0]];
   std::printf(
       "\nvisible evaluated length (px): roof %.0f, iso-out %.0f, iso-in %.0f, unif-in %.0f;",
