@@ -29,8 +29,8 @@ ChromaticThresholds InitThresholds(const std::vector<std::pair<double, double>>&
                                    double factor);
 
 // True when the side pair passes both tests.
-inline bool SidesCompatible(const SideColour& a, const SideColour& b,
-                            const ChromaticThresholds& t, int max_n) {
+inline bool SidesCompatible(const SideColour& a, const SideColour& b, const ChromaticThresholds& t,
+                            int max_n) {
   return a.valid && b.valid && MeanStatistic(a, b, max_n) <= t.mean &&
          CovStatistic(a, b, max_n) <= t.cov;
 }

@@ -1,7 +1,7 @@
 #include "algorithms/matching/correlation.h"
-#include <Eigen/Geometry>
-#include <Eigen/Dense>
 
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 

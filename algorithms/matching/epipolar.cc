@@ -1,7 +1,7 @@
 #include "algorithms/matching/epipolar.h"
-#include <Eigen/Geometry>
-#include <Eigen/Dense>
 
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -95,9 +95,8 @@ std::optional<Eigen::Vector2d> EpipolarTransfer(const PairGeometry& g, const Eig
 }
 
 std::vector<PairHypothesis> GeometricCandidates(
-    const ViewFeatures& vi, const ViewFeatures& vj, int i_index, int j_index,
-    const PairGeometry& g, int si, const std::optional<std::pair<double, double>>& z_range,
-    const MatchOptions& o) {
+    const ViewFeatures& vi, const ViewFeatures& vj, int i_index, int j_index, const PairGeometry& g,
+    int si, const std::optional<std::pair<double, double>>& z_range, const MatchOptions& o) {
   std::vector<PairHypothesis> out;
   const Segment2D& s = vi.ideal[si];
   const double len = s.Length();

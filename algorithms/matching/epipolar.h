@@ -39,17 +39,16 @@ std::optional<Eigen::Vector2d> ProjectIdeal(const ViewFeatures& v, const Eigen::
 
 // Height range of the scene in the local frame (ground - margin up to ground
 // + max building height + margin); empty when the ground is unknown.
-std::optional<std::pair<double, double>> SceneHeightRange(const Block& block,
-                                                          double margin_m);
+std::optional<std::pair<double, double>> SceneHeightRange(const Block& block, double margin_m);
 
 // A putative correspondence of segment si in view i with sj in view j.
 struct PairHypothesis {
-  int vi = -1, vj = -1;  // view indices (into the features vector)
-  int si = -1, sj = -1;  // segment ids
-  double la = 0, lb = 1;  // common part as parameters on si (p0 at 0, p1 at 1)
-  bool reversed = false;  // sj runs opposite to si (its left is si's right)
-  Segment3 line;          // 3D segment of the common part
-  int sides = 0;          // bit 0: left chromatically compatible, bit 1: right
+  int vi = -1, vj = -1;       // view indices (into the features vector)
+  int si = -1, sj = -1;       // segment ids
+  double la = 0, lb = 1;      // common part as parameters on si (p0 at 0, p1 at 1)
+  bool reversed = false;      // sj runs opposite to si (its left is si's right)
+  Segment3 line;              // 3D segment of the common part
+  int sides = 0;              // bit 0: left chromatically compatible, bit 1: right
   double corr[2] = {-9, -9};  // mean h per side of si (§3.4)
   double score = 0;
   int true_pair = -1;  // ground-truth label when known: 1 true, 0 false
@@ -60,9 +59,8 @@ struct PairHypothesis {
 // then the exact strip, angle and height tests. Empty when si meets the
 // epipolar lines at less than min_epipolar_angle.
 std::vector<PairHypothesis> GeometricCandidates(
-    const ViewFeatures& vi, const ViewFeatures& vj, int i_index, int j_index,
-    const PairGeometry& g, int si, const std::optional<std::pair<double, double>>& z_range,
-    const MatchOptions& options);
+    const ViewFeatures& vi, const ViewFeatures& vj, int i_index, int j_index, const PairGeometry& g,
+    int si, const std::optional<std::pair<double, double>>& z_range, const MatchOptions& options);
 
 // The point of segment t's line corresponding to p (intersection with the
 // epipolar line of p); empty when parallel.

@@ -1,7 +1,7 @@
 #include "algorithms/matching/line_triangulation.h"
-#include <Eigen/Geometry>
-#include <Eigen/Dense>
 
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 
@@ -19,7 +19,8 @@ Eigen::Vector2d LineResidual(const LineObservation& o, const Eigen::Vector3d& A,
 
 namespace {
 
-Eigen::VectorXd Residuals(const std::vector<LineObservation>& obs, const Eigen::Matrix<double, 6, 1>& x) {
+Eigen::VectorXd Residuals(const std::vector<LineObservation>& obs,
+                          const Eigen::Matrix<double, 6, 1>& x) {
   Eigen::VectorXd r(2 * obs.size());
   for (size_t i = 0; i < obs.size(); ++i)
     r.segment<2>(2 * i) = LineResidual(obs[i], x.head<3>(), x.tail<3>());

@@ -15,8 +15,8 @@ struct LineObservation {
 };
 
 struct LineEstimate {
-  Segment3 segment;     // endpoints from the union of the observations
-  double rms_px = 0;    // RMS endpoint distance to the projected line
+  Segment3 segment;   // endpoints from the union of the observations
+  double rms_px = 0;  // RMS endpoint distance to the projected line
   bool valid = false;
 };
 

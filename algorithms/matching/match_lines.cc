@@ -1,14 +1,13 @@
 #include "algorithms/matching/match_lines.h"
-#include <Eigen/Geometry>
-#include <Eigen/Dense>
 
 #include <tbb/parallel_for.h>
 
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -34,11 +33,10 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
 
 // Ids of the true edges each segment lies on (both endpoints within 1.5 px
 // of the projected edge line, directions within 3 degrees, overlapping it).
-std::vector<std::vector<int>> TruthLabels(const ViewFeatures& v,
-                                          const std::vector<Segment3>& edges,
+std::vector<std::vector<int>> TruthLabels(const ViewFeatures& v, const std::vector<Segment3>& edges,
                                           double min_length) {
   std::vector<std::vector<int>> labels(v.ideal.size());
-  const double tol = std::getenv("ROOFSWEEP_LABEL_DEBUG") ? 5.0 : 1.5, cos_max = std::cos(3 * kDeg);
+  const double tol = 1.5, cos_max = std::cos(3 * kDeg);
   for (size_t e = 0; e < edges.size(); ++e) {
     const auto a = ProjectIdeal(v, edges[e].a), b = ProjectIdeal(v, edges[e].b);
     if (!a || !b || (*b - *a).norm() < 2) continue;
@@ -55,8 +53,6 @@ std::vector<std::vector<int>> TruthLabels(const ViewFeatures& v,
       const double u = (s.Midpoint() - pe.p0).dot(d);
       if (u < 0 || u > len) continue;
       labels[id].push_back(static_cast<int>(e));
-      if (std::getenv("ROOFSWEEP_LABEL_DEBUG") && v.view == 0)
-        std::fprintf(stderr, "L %.3f %.3f\n", (s.p0 - pe.p0).dot(n), (s.p1 - pe.p0).dot(n));
     }
   }
   return labels;
@@ -123,8 +119,8 @@ double GradientAlong(const ViewFeatures& v, const Segment2D& proj) {
 bool ClipToImage(const ViewFeatures& v, Eigen::Vector2d* a, Eigen::Vector2d* b) {
   double t0 = 0, t1 = 1;
   const Eigen::Vector2d d = *b - *a;
-  const double lo[2] = {0, 0}, hi[2] = {static_cast<double>(v.lab.cols),
-                                        static_cast<double>(v.lab.rows)};
+  const double lo[2] = {0, 0},
+               hi[2] = {static_cast<double>(v.lab.cols), static_cast<double>(v.lab.rows)};
   for (int k = 0; k < 2; ++k) {
     if (std::abs(d[k]) < 1e-12) {
       if ((*a)[k] < lo[k] || (*a)[k] > hi[k]) return false;
@@ -150,8 +146,8 @@ struct Verified {
 }  // namespace
 
 MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
-                       const MatchOptions& o, const EdgeOptions& edge_options,
-                       Progress& progress, const std::vector<Segment3>* truth) {
+                       const MatchOptions& o, const EdgeOptions& edge_options, Progress& progress,
+                       const std::vector<Segment3>* truth) {
   MatchResult res;
   const int nv = static_cast<int>(block.views.size());
   if (static_cast<int>(images.size()) != nv)
@@ -165,22 +161,23 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   auto t0 = std::chrono::steady_clock::now();
   ReportOrCancel(progress, 0.0, "edges");
   res.segments.resize(nv);
-  tbb::parallel_for(0, nv, [&](int v) { res.segments[v] = ExtractSegments(images[v], edge_options); });
+  tbb::parallel_for(0, nv,
+                    [&](int v) { res.segments[v] = ExtractSegments(images[v], edge_options); });
   res.timings.edges_s = Seconds(t0);
   for (const auto& s : res.segments) res.funnel.segments += static_cast<long long>(s.size());
 
   t0 = std::chrono::steady_clock::now();
   ReportOrCancel(progress, 0.2, "flanking regions");
   std::vector<ViewFeatures> views(nv);
-  tbb::parallel_for(0, nv, [&](int v) {
-    views[v] = PrepareView(block, v, images[v], res.segments[v], o);
-  });
+  tbb::parallel_for(
+      0, nv, [&](int v) { views[v] = PrepareView(block, v, images[v], res.segments[v], o); });
   res.timings.features_s = Seconds(t0);
 
   std::vector<std::vector<std::vector<int>>> labels;
   if (truth) {
     labels.resize(nv);
-    tbb::parallel_for(0, nv, [&](int v) { labels[v] = TruthLabels(views[v], *truth, o.min_length); });
+    tbb::parallel_for(0, nv,
+                      [&](int v) { labels[v] = TruthLabels(views[v], *truth, o.min_length); });
     res.funnel.true_all = res.funnel.true_geometric = res.funnel.true_chromatic =
         res.funnel.true_correlation = res.funnel.true_verified = res.funnel.true_assigned = 0;
   }
@@ -252,20 +249,6 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       thr = InitThresholds(stats, o.threshold_factor);
     }
 
-    if (truth && std::getenv("ROOFSWEEP_MATCH_DEBUG")) {
-      static std::FILE* f = std::fopen(std::getenv("ROOFSWEEP_MATCH_DEBUG"), "w");
-      for (int s = 0; s < ns; ++s)
-        for (const PairHypothesis& h : cand[s]) {
-          const int t = Shares(labels[i][s], labels[j][h.sj]);
-          for (int side = 0; side < 2; ++side) {
-            const SideColour& a = views[i].sides[s][side];
-            const SideColour& b = views[j].sides[h.sj][side_j(h, side)];
-            if (!a.valid || !b.valid) continue;
-            std::fprintf(f, "%d %d %d %d %d %g %g\n", i, j, s, t, side, MeanStatistic(a, b, o.max_test_pixels) / thr.mean,
-                         CovStatistic(a, b, o.max_test_pixels) / thr.cov);
-          }
-        }
-    }
     std::vector<std::array<long long, 3>> counts(ns, {0, 0, 0});
     std::vector<std::array<long long, 3>> tcounts(ns, {0, 0, 0});
     tbb::parallel_for(0, ns, [&](int s) {
@@ -306,14 +289,17 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       for (PairHypothesis& h : cand[s]) hyps.push_back({h, {}});
     }
     if (truth) {
-      // All true pairs of this view pair, whatever the stages did.
+      MatchOptions loose = o;
+      loose.max_angle_deviation = 90;
       for (int s = 0; s < ns; ++s) {
         if (labels[i][s].empty()) continue;
         if (skipped[s] || views[i].ideal[s].Length() < o.min_length) continue;
-        for (size_t t = 0; t < views[j].ideal.size(); ++t)
-          if (!labels[j][t].empty() && Shares(labels[i][s], labels[j][t]) &&
-              EpipolarAngle(g.e_j, views[j].ideal[t]) >= o.min_epipolar_angle)
-            ++res.funnel.true_all;
+        // Eligible: on the same true edge and overlapping along it by the
+        // minimum common length (fragments of one edge that do not overlap
+        // are no correspondence), whatever the angle and height limits.
+        for (const PairHypothesis& h :
+             GeometricCandidates(views[i], views[j], i, j, g, s, std::nullopt, loose))
+          if (Shares(labels[i][s], labels[j][h.sj])) ++res.funnel.true_all;
       }
     }
   }
@@ -360,9 +346,6 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     accepted[n] = seeing == 0 || (supporting >= o.min_support_segments &&
                                   support >= std::max(1.0, o.min_support_fraction * seeing));
     vh.h.score += static_cast<double>(vh.support.size());
-    if (std::getenv("ROOFSWEEP_VERIFY_DEBUG"))
-      std::fprintf(stderr, "V %d %d %d %d %d %.2f\n", h.true_pair, seeing, supporting, gradient_only,
-                   h.vj - h.vi, h.score);
   });
   std::vector<Verified> kept;
   for (size_t n = 0; n < hyps.size(); ++n)
@@ -409,7 +392,8 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     line->observations = obs_keys;
     // Orient like the first observation.
     const auto& [v0, s0] = obs_keys.front();
-    const auto pa = ProjectIdeal(views[v0], line->segment.a), pb = ProjectIdeal(views[v0], line->segment.b);
+    const auto pa = ProjectIdeal(views[v0], line->segment.a),
+               pb = ProjectIdeal(views[v0], line->segment.b);
     if (pa && pb && (*pb - *pa).dot(views[v0].ideal[s0].p1 - views[v0].ideal[s0].p0) < 0)
       std::swap(line->segment.a, line->segment.b);
     line->colour_left = res.segments[v0][s0].colour_left;
@@ -418,8 +402,8 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   };
   tbb::parallel_for(size_t{0}, track_of.size(), [&](size_t k) {
     const Verified& vh = hyps[track_of[k]];
-    ok[k] = estimate(assigned[track_of[k]], vh.h.line, &lines[k]) &&
-            lines[k].Views() >= o.min_views;
+    ok[k] =
+        estimate(assigned[track_of[k]], vh.h.line, &lines[k]) && lines[k].Views() >= o.min_views;
   });
   std::vector<Line3D> good;
   for (size_t k = 0; k < lines.size(); ++k)
@@ -431,7 +415,9 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   const int nl = static_cast<int>(good.size());
   std::vector<int> parent(nl);
   std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  std::function<int(int)> find = [&](int x) {
+    return parent[x] == x ? x : parent[x] = find(parent[x]);
+  };
   const double cos_merge = std::cos(o.merge_angle * kDeg);
   std::vector<int> by_x(nl);
   std::iota(by_x.begin(), by_x.end(), 0);
@@ -494,7 +480,8 @@ std::string FormatFunnel(const MatchFunnel& f) {
   out << "Reduction of match candidates (Scholze et al. 2000, sec. 4), " << f.view_pairs
       << " view pairs, " << f.segments << " segments:\n";
   const bool t = f.true_all >= 0;
-  std::snprintf(buf, sizeof buf, "  %-28s %12s%s\n", "stage", "pairs", t ? "   true pairs  kept" : "");
+  std::snprintf(buf, sizeof buf, "  %-28s %12s%s\n", "stage", "pairs",
+                t ? "   true pairs  kept" : "");
   out << buf;
   auto row = [&](const char* name, long long n, long long tn) {
     if (t) {
@@ -511,8 +498,8 @@ std::string FormatFunnel(const MatchFunnel& f) {
   row("chromatic correlation", f.correlation, f.true_correlation);
   row("verified in other views", f.verified, f.true_verified);
   row("one-to-one (final)", f.assigned, f.true_assigned);
-  std::snprintf(buf, sizeof buf, "  3D lines: %d (before merging collinear fragments: %d)\n", f.lines,
-                f.lines_before_merge);
+  std::snprintf(buf, sizeof buf, "  3D lines: %d (before merging collinear fragments: %d)\n",
+                f.lines, f.lines_before_merge);
   out << buf;
   std::snprintf(buf, sizeof buf, "  segment/pair combinations skipped as nearly epipolar: %lld\n",
                 f.skipped_epipolar);

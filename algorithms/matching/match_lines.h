@@ -31,8 +31,8 @@ struct Line3D {
 // Counts of the reduction funnel (Scholze et al. 2000, §4) summed over the
 // view pairs, with the ground-truth counterparts when truth was given.
 struct MatchFunnel {
-  long long segments = 0;     // detected, all views
-  int view_pairs = 0;         // pairs with distinct centres
+  long long segments = 0;          // detected, all views
+  int view_pairs = 0;              // pairs with distinct centres
   long long skipped_epipolar = 0;  // segment/pair combinations nearly along the epipolar lines
   long long geometric = 0, chromatic = 0, correlation = 0, verified = 0, assigned = 0;
   int lines_before_merge = 0, lines = 0;

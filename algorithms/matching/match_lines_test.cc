@@ -24,6 +24,10 @@ SimBlock Simulate(uint64_t seed) {
   o.seed = seed;
   o.cameras.image_width = o.cameras.image_height = 512;
   o.cameras.gsd = 0.1;
+  // A 512 px sensor behind the preset's 50 mm lens would fly at 1 km with a
+  // base/height ratio of 0.014 (heights to +-1.5 m); 3 mm gives the usual
+  // photogrammetric ~0.25 at this image size.
+  o.cameras.focal_mm = 3;
   o.cameras.strips = 2;
   o.cameras.images_per_strip = 3;
   o.scene.building_count = 6;
@@ -56,23 +60,32 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
   for (uint64_t seed : {1, 2, 3}) {
     const SimBlock b = Simulate(seed);
     NullProgress np;
-    const MatchResult r = MatchLines(b.block, b.images, MatchOptions{}, EdgeOptions{}, np, &b.truth);
+    const MatchResult r =
+        MatchLines(b.block, b.images, MatchOptions{}, EdgeOptions{}, np, &b.truth);
     std::vector<Segment3> lines;
     for (const Line3D& l : r.lines) lines.push_back(l.segment);
     const eval::LineScores s = eval::EvaluateLines(lines, b.roof, b.extra, eval::LineEvalOptions{});
     ASSERT_GT(s.result_length_m, 0) << "seed " << seed;
     const double precision = s.result_on_reference_m / s.result_length_m;
     const double roof_completeness = s.roof_edge_covered_m / s.roof_edge_length_m;
+    eval::LineEvalOptions loose;
+    loose.distance_m = 0.5;
+    const eval::LineScores s50 = eval::EvaluateLines(lines, b.roof, b.extra, loose);
+    std::printf("seed %d: within 0.5 m: precision %.3f, roof-edge completeness %.3f\n",
+                static_cast<int>(seed), s50.result_on_reference_m / s50.result_length_m,
+                s50.roof_edge_covered_m / s50.roof_edge_length_m);
     const MatchFunnel& f = r.funnel;
     const double chroma_kept = static_cast<double>(f.true_chromatic) / f.true_geometric;
-    std::printf("seed %d: %zu lines, precision %.3f, roof-edge completeness %.3f, "
-                "true pairs kept by the chromatic test %.3f\n%s",
-                static_cast<int>(seed), r.lines.size(), precision, roof_completeness, chroma_kept,
-                FormatFunnel(f).c_str());
-    // Thresholds below the measured values (see the report); far from the
-    // issue's targets (95 % / 90 %), which this matcher does not reach yet.
-    EXPECT_GT(precision, 0.0) << "seed " << seed;
-    EXPECT_GT(roof_completeness, 0.0) << "seed " << seed;
+    std::printf(
+        "seed %d: %zu lines, precision %.3f, roof-edge completeness %.3f, "
+        "true pairs kept by the chromatic test %.3f\n%s",
+        static_cast<int>(seed), r.lines.size(), precision, roof_completeness, chroma_kept,
+        FormatFunnel(f).c_str());
+    // Measured (seeds 1-3): precision 0.37 / 0.23 / 0.31, roof-edge
+    // completeness 0.13 / 0.46 / 0.49. These floors sit below them; the
+    // issue's targets (0.95 / 0.90) are NOT reached yet.
+    EXPECT_GT(precision, 0.15) << "seed " << seed;
+    EXPECT_GT(roof_completeness, 0.08) << "seed " << seed;
     EXPECT_GE(f.geometric, f.chromatic);
     EXPECT_GE(f.chromatic, f.correlation);
     EXPECT_GE(f.correlation, f.verified);
@@ -118,7 +131,8 @@ TEST(MatchLines, DegenerateInput) {
   EXPECT_TRUE(r.lines.empty());
   EXPECT_FALSE(r.messages.empty());
   // Blank images: no segments, nothing to match, no crash.
-  std::vector<cv::Mat> blank(b.block.views.size(), cv::Mat(512, 512, CV_32FC3, cv::Scalar(0.4, 0.4, 0.4)));
+  std::vector<cv::Mat> blank(b.block.views.size(),
+                             cv::Mat(512, 512, CV_32FC3, cv::Scalar(0.4, 0.4, 0.4)));
   r = MatchLines(b.block, blank, {}, {}, np);
   EXPECT_TRUE(r.lines.empty());
 }

@@ -45,7 +45,7 @@ struct MatchOptions {
   int max_test_pixels = 200;
 
   // ---- correlation (§3.4)
-  double ncc_window = 7.0;  // px along the segment, window of pointwise NCC
+  double ncc_window = 7.0;   // px along the segment, window of pointwise NCC
   double sample_step = 1.0;  // px along the common part
   // The flanking area in the second view is scaled by s in [1/max, max]
   // across the segment (foreshortening), tried in scale_steps steps.

@@ -48,7 +48,8 @@ Segment2D ProjectSeg(const Block& b, int v, const Eigen::Vector3d& A, const Eige
 // Colour texture on the ground: two differently coloured, textured halves
 // either side of x = 0.
 cv::Vec3f Texture(double x, double y) {
-  const float t = static_cast<float>(0.08 * std::sin(1.7 * x + 0.3 * y) + 0.06 * std::cos(2.3 * y - 0.9 * x));
+  const float t =
+      static_cast<float>(0.08 * std::sin(1.7 * x + 0.3 * y) + 0.06 * std::cos(2.3 * y - 0.9 * x));
   const float u = static_cast<float>(0.07 * std::sin(2.9 * y + 1.1 * x));
   if (x < 0) return cv::Vec3f(0.6f + t, 0.3f + u, 0.2f - t / 2);
   return cv::Vec3f(0.25f + u, 0.45f - t, 0.55f + t);
@@ -72,11 +73,14 @@ TEST(EpipolarCandidates, StripAngleAndHeightRange) {
   const Eigen::Vector3d A(2, -5, 10), B(2, 5, 10);
   Segments2D s0 = {ProjectSeg(b, 0, A, B)};
   Segments2D s1 = {
-      ProjectSeg(b, 1, A, B),                                              // 0: the match
-      ProjectSeg(b, 1, A + Eigen::Vector3d(0, 30, 0), B + Eigen::Vector3d(0, 30, 0)),  // 1: outside the strip
-      ProjectSeg(b, 1, A + Eigen::Vector3d(-2, 0, 0), A + Eigen::Vector3d(6, 3, 0)),   // 2: wrong angle
-      ProjectSeg(b, 1, A + Eigen::Vector3d(25, 0, 0), B + Eigen::Vector3d(25, 0, 0)),  // 3: far: below ground
-      ProjectSeg(b, 1, A + Eigen::Vector3d(1, 0, 0), B + Eigen::Vector3d(1, 2, 0)),    // 4: plausible
+      ProjectSeg(b, 1, A, B),  // 0: the match
+      ProjectSeg(b, 1, A + Eigen::Vector3d(0, 30, 0),
+                 B + Eigen::Vector3d(0, 30, 0)),  // 1: outside the strip
+      ProjectSeg(b, 1, A + Eigen::Vector3d(-2, 0, 0),
+                 A + Eigen::Vector3d(6, 3, 0)),  // 2: wrong angle
+      ProjectSeg(b, 1, A + Eigen::Vector3d(25, 0, 0),
+                 B + Eigen::Vector3d(25, 0, 0)),  // 3: far: below ground
+      ProjectSeg(b, 1, A + Eigen::Vector3d(1, 0, 0), B + Eigen::Vector3d(1, 2, 0)),  // 4: plausible
   };
   const cv::Mat blank(1000, 1000, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
   const ViewFeatures v0 = PrepareView(b, 0, blank, s0, o);
@@ -117,8 +121,9 @@ SideColour Region(std::mt19937& rng, Eigen::Vector2d mean, double sa, double sb,
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Eigen::Vector2d> pts;
   for (int i = 0; i < n; ++i)
-    pts.push_back(u(rng) < outliers ? Eigen::Vector2d(40 + 5 * z(rng), -30 + 5 * z(rng))
-                                    : Eigen::Vector2d(mean + Eigen::Vector2d(sa * z(rng), sb * z(rng))));
+    pts.push_back(u(rng) < outliers
+                      ? Eigen::Vector2d(40 + 5 * z(rng), -30 + 5 * z(rng))
+                      : Eigen::Vector2d(mean + Eigen::Vector2d(sa * z(rng), sb * z(rng))));
   const Robust2D r = RobustMcd2D(pts, 1);
   SideColour s;
   s.valid = r.valid;
@@ -158,11 +163,20 @@ TEST(ChromaticTests, SameDistributionPassesDifferentFails) {
 }
 
 TEST(ChromaticTests, ThresholdInitialisationUsesMedians) {
-  std::vector<std::pair<double, double>> stats = {{1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6},
-                                                  {500, 600}, {800, 900}};
+  // Per random segment the statistics of its most similar candidate; a few
+  // segments whose true partner is missing give outliers the median ignores.
+  std::vector<std::pair<double, double>> stats = {{10, 20}, {20, 30},   {30, 40},  {40, 50},
+                                                  {50, 60}, {500, 600}, {800, 900}};
   const ChromaticThresholds t = InitThresholds(stats, 2.0);
-  EXPECT_DOUBLE_EQ(t.mean, 6.0);   // 2 x median {1..5}
-  EXPECT_DOUBLE_EQ(t.cov, 8.0);    // 2 x median {2..6}
+  EXPECT_DOUBLE_EQ(t.mean, 80.0);  // 2 x median
+  EXPECT_DOUBLE_EQ(t.cov, 100.0);
+  // Never below the chi2 0.001 quantiles; too few samples: those quantiles x factor.
+  const ChromaticThresholds low =
+      InitThresholds({{0.1, 0.1}, {0.2, 0.2}, {0.1, 0.3}, {0.2, 0.1}, {0.1, 0.2}}, 2.0);
+  EXPECT_NEAR(low.mean, 13.816, 1e-3);
+  EXPECT_NEAR(low.cov, 16.266, 1e-3);
+  const ChromaticThresholds few = InitThresholds({{1, 1}}, 2.0);
+  EXPECT_NEAR(few.mean, 2 * 13.816, 1e-3);
 }
 
 TEST(Correlation, NccBasics) {
@@ -258,9 +272,9 @@ TEST(Assignment, PicksTheConsistentOneToOneSet) {
   items[3] = {{{0, 1}, {1, 2}, {2, 5}}, 0.4};
   const auto a = AssignOneToOne(items);
   EXPECT_FALSE(a[0].empty());
-  EXPECT_TRUE(a[1].empty());  // (1,0) already taken by the better hypothesis
-  EXPECT_TRUE(a[2].empty());  // (0,0) taken
-  ASSERT_EQ(a[3].size(), 3u); // (0,1) goes to its remaining partner, with support
+  EXPECT_TRUE(a[1].empty());   // (1,0) already taken by the better hypothesis
+  EXPECT_TRUE(a[2].empty());   // (0,0) taken
+  ASSERT_EQ(a[3].size(), 3u);  // (0,1) goes to its remaining partner, with support
   // Symmetric: reversing the roles of the views gives the same pairs.
   std::vector<AssignmentItem> rev = items;
   for (auto& it : rev) std::swap(it.keys[0], it.keys[1]);

@@ -25,8 +25,10 @@ TEST(RobustMcd2D, IgnoresThirtyPercentOutliers) {
   // Inliers: mean (10, -5), covariance [[4, 1.2], [1.2, 1]].
   Eigen::Matrix2d L;
   L << 2, 0, 0.6, 0.8;
-  for (int i = 0; i < 700; ++i) pts.push_back(Eigen::Vector2d(10, -5) + L * Eigen::Vector2d(z(rng), z(rng)));
-  for (int i = 0; i < 300; ++i) pts.push_back(Eigen::Vector2d(30, 20) + 3 * Eigen::Vector2d(z(rng), z(rng)));
+  for (int i = 0; i < 700; ++i)
+    pts.push_back(Eigen::Vector2d(10, -5) + L * Eigen::Vector2d(z(rng), z(rng)));
+  for (int i = 0; i < 300; ++i)
+    pts.push_back(Eigen::Vector2d(30, 20) + 3 * Eigen::Vector2d(z(rng), z(rng)));
   const Robust2D r = RobustMcd2D(pts, 1);
   ASSERT_TRUE(r.valid);
   EXPECT_NEAR(r.mean.x(), 10, 0.3);
@@ -43,9 +45,7 @@ TEST(RobustMcd2D, IgnoresThirtyPercentOutliers) {
   EXPECT_GT((m - Eigen::Vector2d(10, -5)).norm(), 5);
 }
 
-TEST(RobustMcd2D, TooFewPointsIsInvalid) {
-  EXPECT_FALSE(RobustMcd2D({{0, 0}, {1, 1}}).valid);
-}
+TEST(RobustMcd2D, TooFewPointsIsInvalid) { EXPECT_FALSE(RobustMcd2D({{0, 0}, {1, 1}}).valid); }
 
 }  // namespace
 }  // namespace roofsweep

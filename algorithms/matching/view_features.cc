@@ -1,7 +1,7 @@
 #include "algorithms/matching/view_features.h"
-#include <Eigen/Geometry>
-#include <Eigen/Dense>
 
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -169,8 +169,8 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
     for (int k = 0; k < 2; ++k) {
       const auto px = FlankingRegion(f.labels, f.segments[i], static_cast<int>(i), k == 0 ? 1 : -1,
                                      options.region_offset, options.region_width);
-      f.sides[i][k] = RegionColour(f.lab, px, options,
-                                   options.seed * 7919u + static_cast<unsigned>(i * 2 + k));
+      f.sides[i][k] =
+          RegionColour(f.lab, px, options, options.seed * 7919u + static_cast<unsigned>(i * 2 + k));
     }
   }
   return f;

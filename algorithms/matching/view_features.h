@@ -32,14 +32,14 @@ struct ViewFeatures {
   int view = -1;
   const Camera* camera = nullptr;
   Pose pose;
-  Eigen::Matrix<double, 3, 4> P;  // ideal pixels
-  cv::Mat lab;                    // CV_32FC3, L* in [0, 100]
-  cv::Mat gradient;               // CV_32F, |grad| of L*/100 per px
-  cv::Mat labels;                 // CV_32S, segment id or -1
-  bool grey = false;              // no chroma: correlation on L* instead of a*, b*
-  Segments2D segments;            // image pixel coordinates, as detected
-  Segments2D ideal;               // the same in ideal pixel coordinates
-  std::unique_ptr<SegmentIndex> index;  // over `ideal`
+  Eigen::Matrix<double, 3, 4> P;                 // ideal pixels
+  cv::Mat lab;                                   // CV_32FC3, L* in [0, 100]
+  cv::Mat gradient;                              // CV_32F, |grad| of L*/100 per px
+  cv::Mat labels;                                // CV_32S, segment id or -1
+  bool grey = false;                             // no chroma: correlation on L* instead of a*, b*
+  Segments2D segments;                           // image pixel coordinates, as detected
+  Segments2D ideal;                              // the same in ideal pixel coordinates
+  std::unique_ptr<SegmentIndex> index;           // over `ideal`
   std::vector<std::array<SideColour, 2>> sides;  // [left, right] per segment
 
   // Ideal pixel <-> image pixel (identity without distortion).
@@ -54,16 +54,16 @@ struct ViewFeatures {
 // Builds the features of one view from its RGB image (CV_32FC3 in [0, 1],
 // or CV_32FC1 grey) and detected segments (segments shorter than
 // options.min_length are kept but get no attributes).
-ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image,
-                         Segments2D segments, const MatchOptions& options);
+ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Segments2D segments,
+                         const MatchOptions& options);
 
 // The pixels of one adaptive flanking region (§3.2.1), as image positions
 // (pixel centres), grown row by row away from the segment with the 3x3
 // rule: a cell joins when the three cells before it joined and no other
 // contour is right behind it. side: +1 left, -1 right. `scale` stretches the
 // region across the segment (used by the correlation, §3.4).
-std::vector<Eigen::Vector2d> FlankingRegion(const cv::Mat& labels, const Segment2D& segment,
-                                            int id, int side, double offset, double width);
+std::vector<Eigen::Vector2d> FlankingRegion(const cv::Mat& labels, const Segment2D& segment, int id,
+                                            int side, double offset, double width);
 
 // Attributes of a region from its pixels.
 SideColour RegionColour(const cv::Mat& lab, const std::vector<Eigen::Vector2d>& pixels,

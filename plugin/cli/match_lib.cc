@@ -44,9 +44,8 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   const Block block = ManifestToBlock(manifest);
   const LocalFrame frame = ManifestLocalFrame(manifest);
   std::vector<cv::Mat> images(block.views.size());
-  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
-    images[v] = ReadImage(block.views[v].image_path);
-  });
+  tbb::parallel_for(size_t{0}, images.size(),
+                    [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
   out.read_s = Since(t0);
 
   std::vector<Segment3> truth_local;
@@ -57,8 +56,8 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
       truth_local.push_back({frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)});
   }
   SubProgress sub(progress, 0.0, 0.95);
-  out.result = MatchLines(block, images, r.match, r.edges, sub,
-                          r.truth.empty() ? nullptr : &truth_local);
+  out.result =
+      MatchLines(block, images, r.match, r.edges, sub, r.truth.empty() ? nullptr : &truth_local);
 
   if (!r.truth.empty()) {
     std::vector<Segment3> lines, roof, extra;
