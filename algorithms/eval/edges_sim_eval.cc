@@ -34,7 +34,8 @@ using sim::EdgeKind;
 
 struct Totals {
   eval::LengthScore roof;
-  std::map<EdgeKind, eval::LengthScore> kinds;
+  std::map<EdgeKind, eval::LengthScore> kinds, kinds_interior;
+  eval::LengthScore roof_interior;  // without 5 px at either end of each edge
   // Outline (eave, verge) of the roofs coloured to match the lawn's
   // luminance, and ridges/hips/valleys/breaks of roofs whose faces all share
   // one material (only the shading separates the faces).
@@ -183,6 +184,8 @@ int Main(int argc, char** argv) {
             eval::EvaluateSegments2D(view.camera, view.pose, r.truth.edges, visible, segments);
         Totals& t = totals[m];
         Add(t.roof, s.roof);
+        Add(t.roof_interior, s.roof_interior);
+        for (const auto& [k, score] : s.per_kind_interior) Add(t.kinds_interior[k], score);
         for (const auto& [k, score] : s.per_kind) {
           Add(t.kinds[k], score);
           seen_kinds.insert(k);
@@ -252,6 +255,20 @@ int Main(int argc, char** argv) {
     PrintCell(Pct(t.isoluminant_inner));
     PrintCell(Pct(t.uniform_inner));
     for (EdgeKind k : seen_kinds) PrintCell(Pct(t.kinds.at(k)));
+    std::printf("\n");
+  }
+  std::printf("\nthe same without 5 px at either end of each edge (junctions, corners):\n");
+  std::printf("%-8s %7s", "method", "recall");
+  for (EdgeKind k : seen_kinds) std::printf(" %7.7s", sim::EdgeKindName(k));
+  std::printf("\n");
+  for (const std::string& m : methods) {
+    const Totals& tm = totals[m];
+    std::printf("%-8s", m.c_str());
+    PrintCell(Pct(tm.roof_interior));
+    for (EdgeKind k : seen_kinds) {
+      const auto it = tm.kinds_interior.find(k);
+      PrintCell(it == tm.kinds_interior.end() ? -1 : Pct(it->second));
+    }
     std::printf("\n");
   }
   std::printf(

@@ -141,6 +141,9 @@ Segment2DScores EvaluateSegments2D(const Camera& camera, const Pose& pose,
     if (inside_len + step < o.min_edge_length_px) continue;
     const double w = inside_len / (s.size() - 1);  // length per sample
     LengthScore& score = out.per_edge[e];
+    LengthScore interior;
+    // Ends of the whole projected edge (not of its part inside the image).
+    const auto end_a = Project(camera, pose, edge.a), end_b = Project(camera, pose, edge.b);
     for (const EdgeSample& x : s) {
       const V2 n(x.direction.y(), -x.direction.x());
       const bool vis = visible(x.pixel, x.depth) ||
@@ -148,14 +151,26 @@ Segment2DScores EvaluateSegments2D(const Camera& camera, const Pose& pose,
                        visible(x.pixel - o.probe_offset_px * n, x.depth);
       if (!vis) continue;
       score.length_px += w;
-      if (Matches(detected_index, detected, x.pixel, x.direction, o)) score.covered_px += w;
+      const bool covered = Matches(detected_index, detected, x.pixel, x.direction, o);
+      if (covered) score.covered_px += w;
+      const bool near_end = (end_a && (x.pixel - *end_a).norm() < o.end_margin_px) ||
+                            (end_b && (x.pixel - *end_b).norm() < o.end_margin_px);
+      if (!near_end) {
+        interior.length_px += w;
+        if (covered) interior.covered_px += w;
+      }
     }
     LengthScore& k = out.per_kind[edge.kind];
     k.length_px += score.length_px;
     k.covered_px += score.covered_px;
+    LengthScore& ki = out.per_kind_interior[edge.kind];
+    ki.length_px += interior.length_px;
+    ki.covered_px += interior.covered_px;
     if (sim::IsRoofEdge(edge.kind)) {
       out.roof.length_px += score.length_px;
       out.roof.covered_px += score.covered_px;
+      out.roof_interior.length_px += interior.length_px;
+      out.roof_interior.covered_px += interior.covered_px;
     }
   }
 

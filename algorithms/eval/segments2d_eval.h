@@ -31,6 +31,10 @@ struct Segment2DEvalOptions {
   // Samples nearer than this to the image border are ignored (the gradient
   // is not defined there).
   double border_px = 2.0;
+  // Diagnostics: the "interior" scores leave out the samples within this
+  // distance of either end of the projected edge (junctions and corners,
+  // where any detector loses a few pixels).
+  double end_margin_px = 5.0;
   // Visibility probes: the sample and the points this far across the edge on
   // either side (an eave or verge is the border of its face, so the pixel on
   // the edge itself may show the ground behind; one side shows the face).
@@ -60,6 +64,9 @@ struct Segment2DScores {
   LengthScore roof;
   // The same per kind, for every kind (walls, footprints, markings too).
   std::map<sim::EdgeKind, LengthScore> per_kind;
+  // The same without the end_margin_px at either end of each edge.
+  LengthScore roof_interior;
+  std::map<sim::EdgeKind, LengthScore> per_kind_interior;
   // Per true edge (same order as the input): visible evaluated length and
   // covered length; zero for edges too short, outside or hidden.
   std::vector<LengthScore> per_edge;

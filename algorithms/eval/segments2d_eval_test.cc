@@ -55,6 +55,7 @@ TEST(Segments2DEval, PerfectDetectionScoresOne) {
   EXPECT_DOUBLE_EQ(s.Precision(), 1.0);
   EXPECT_NEAR(s.detected_px, 100.0, 1e-9);
   EXPECT_DOUBLE_EQ(s.per_kind.at(sim::EdgeKind::kRidge).Ratio(), 1.0);
+  EXPECT_NEAR(s.roof_interior.length_px, 90.0, 1.0);  // 5 px off each end
 }
 
 TEST(Segments2DEval, ThreePixelShiftScoresZero) {
@@ -92,6 +93,7 @@ TEST(Segments2DEval, HalfCoveredAndNonRoofKinds) {
   // Markings do not count in roof recall; the 1.5 px tolerance reaches past
   // the segment end by up to 2 samples.
   EXPECT_NEAR(s.Recall(), 0.51, 0.015);
+  EXPECT_NEAR(s.roof_interior.Ratio(), 46.0 / 90.0, 0.02);
   EXPECT_NEAR(s.per_kind.at(sim::EdgeKind::kGroundMarking).Ratio(), 1.0, 1e-9);
   EXPECT_NEAR(s.Precision(), 150.0 / 250.0, 1e-9);
   ASSERT_EQ(s.per_segment.size(), 3u);
