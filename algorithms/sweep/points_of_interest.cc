@@ -43,6 +43,13 @@ bool Crosses(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Segment2&
   return t >= 0 && t <= t_max && u >= 0 && u <= 1;
 }
 
+double DistanceToSegment(const Eigen::Vector2d& x, const Segment2& s) {
+  const Eigen::Vector2d d = s.second - s.first;
+  const double l2 = d.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((x - s.first).dot(d) / l2, 0.0, 1.0) : 0.0;
+  return (s.first + t * d - x).norm();
+}
+
 }  // namespace
 
 std::vector<BandPoint> BandPoints(const ViewTexture& texture, const Eigen::Vector2d& p0,
@@ -69,6 +76,10 @@ std::vector<BandPoint> BandPoints(const ViewTexture& texture, const Eigen::Vecto
             c1 = std::min(cols - 1, static_cast<int>(std::ceil(x1)));
   const int r0 = std::max(0, static_cast<int>(std::floor(y0))),
             r1 = std::min(rows - 1, static_cast<int>(std::ceil(y1)));
+  // Like the line itself, other lines' edges are kept out of the windows:
+  // whether they lie on the plane is for the geometric grouping to judge
+  // (§4); the sweep measures the texture between them.
+  const double keep_off = options.min_distance_px + options.ncc_radius;
   // Blockers near the band only.
   std::vector<Segment2> near;
   for (const auto& s : blockers) {
@@ -84,11 +95,11 @@ std::vector<BandPoint> BandPoints(const ViewTexture& texture, const Eigen::Vecto
       const Eigen::Vector2d x(c + 0.5, r + 0.5);
       const double t = (x - p0).dot(u), s = (x - p0).dot(n);
       if (t < options.end_margin_px || t > length - options.end_margin_px) continue;
-      if (s < options.min_distance_px + options.ncc_radius || s > w) continue;
+      if (s < keep_off || s > w) continue;
       const Eigen::Vector2d foot = p0 + t * u;
       bool blocked = false;
       for (const auto& b : near) {
-        if (Crosses(x, foot, b, 0.5)) {
+        if (Crosses(x, foot, b, 0.5) || DistanceToSegment(x, b) < keep_off) {
           blocked = true;
           break;
         }

@@ -30,7 +30,8 @@ struct BandPoint {
 // Points of interest in the band on one image side of the projected segment
 // p0 -> p1 (`image_side`: the sign ImageSide gives for points of the band),
 // from options.min_distance_px to options.band_width_px off the line, skipping
-// points whose perpendicular path to the line crosses one of `blockers`.
+// points whose perpendicular path to the line crosses one of `blockers` or
+// that lie within min_distance_px + ncc_radius of one.
 // At most options.max_points, evenly thinned in raster order.
 std::vector<BandPoint> BandPoints(const ViewTexture& texture, const Eigen::Vector2d& p0,
                                   const Eigen::Vector2d& p1, int image_side,

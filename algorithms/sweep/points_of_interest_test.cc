@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace roofsweep {
 namespace {
 
@@ -15,6 +18,8 @@ ViewTexture AllPoints(int cols, int rows) {
 TEST(BandPoints, BandOnTheRequestedSideOffTheLine) {
   const ViewTexture t = AllPoints(200, 200);
   SweepOptions o;
+  o.band_width_px = 40;
+  o.ncc_radius = 2;
   o.max_points = 0;  // no thinning
   const Eigen::Vector2d p0(50, 100), p1(150, 100);
   for (int side : {1, -1}) {
@@ -36,6 +41,8 @@ TEST(BandPoints, BandOnTheRequestedSideOffTheLine) {
 TEST(BandPoints, ClippedBehindAnotherLine) {
   const ViewTexture t = AllPoints(200, 200);
   SweepOptions o;
+  o.band_width_px = 40;
+  o.ncc_radius = 2;
   o.max_points = 0;
   const Eigen::Vector2d p0(50, 100), p1(150, 100);
   // A parallel line 20 px away on side +1 (cross > 0: y > 100 here).
@@ -43,17 +50,24 @@ TEST(BandPoints, ClippedBehindAnotherLine) {
   const std::vector<Segment2> blockers = {{Eigen::Vector2d(40, 120), Eigen::Vector2d(160, 120)}};
   const auto pts = BandPoints(t, p0, p1, 1, blockers, o);
   ASSERT_FALSE(pts.empty());
-  for (const BandPoint& p : pts) EXPECT_LT(p.distance, 20.0);
+  // ... and the windows stay off the blocking line as off the line itself.
+  for (const BandPoint& p : pts) EXPECT_LE(p.distance, 20.0 - o.min_distance_px - o.ncc_radius);
   // A blocker from the line's end point into the band (a hip at a ridge
   // end) hides only the points behind it.
-  const std::vector<Segment2> hip = {{p1, Eigen::Vector2d(110, 140)}};
+  // (Not at 45 degrees, so that no pixel centre lies exactly 4 px off it.)
+  const Eigen::Vector2d hip_end(110.3, 140);
+  const std::vector<Segment2> hip = {{p1, hip_end}};
   const auto beside = BandPoints(t, p0, p1, 1, hip, o);
   size_t expected = 0;
-  for (const BandPoint& p : BandPoints(t, p0, p1, 1, {}, o))
-    expected += p.pixel.x() + p.pixel.y() < 250.0;  // left of the hip
+  for (const BandPoint& p : BandPoints(t, p0, p1, 1, {}, o)) {
+    // Left of the hip and at least min_distance + radius = 4 px from it.
+    const Eigen::Vector2d d = hip_end - p1, x = p.pixel - p1;
+    const double cross = d.x() * x.y() - d.y() * x.x();
+    const double along = std::clamp(x.dot(d) / d.squaredNorm(), 0.0, 1.0);
+    expected += cross > 0 && (x - along * d).norm() >= 4.0;
+  }
   EXPECT_EQ(beside.size(), expected);
   EXPECT_GT(expected, 1000u);
-  for (const BandPoint& p : beside) EXPECT_LT(p.pixel.x() + p.pixel.y(), 250.0);
 }
 
 TEST(BandPoints, ThinnedToMaxPoints) {

@@ -34,12 +34,18 @@ const HalfPlane& SideOf(const std::vector<HalfPlane>& r, int side) {
   return r.at(side > 0 ? 0 : 1);
 }
 
+// Sweeps the ridge (results 0, 1) and any further lines.
 std::vector<HalfPlane> Sweep(const TestScene& scene, const Block& block,
-                             const SweepOptions& options = SweepOptions()) {
+                             const SweepOptions& options = SweepOptions(),
+                             const std::vector<Segment3>& more_lines = {}) {
   NullProgress progress;
-  return SweepHalfPlanes(block, sweep_test::RenderAll(scene, block), {SweepLine{kRidge, {}}},
-                         options, progress);
+  std::vector<SweepLine> lines = {{kRidge, {}}};
+  for (const Segment3& s : more_lines) lines.push_back({s, {}});
+  return SweepHalfPlanes(block, sweep_test::RenderAll(scene, block), lines, options, progress);
 }
+
+// The lower edge of a face (its eave), as a 3D line.
+Segment3 Eave(const Quad& q) { return Segment3{q.origin + q.v, q.origin + q.u + q.v}; }
 
 // A gable roof: both textured faces are found at -pitch, within 1 degree
 // (the paper reports better than 2).
@@ -66,12 +72,15 @@ TEST(SweepHalfPlanes, GableRidgeFindsBothPitches) {
 
 // An untextured face gives no reliable maximum. The faces run on beyond the
 // line: an untextured face's own outline (its verges against the ground)
-// is texture on the plane and would rightly support it.
+// is texture on the plane and would rightly support it. The eaves are
+// input lines too, as they would be in the pipeline: they bound the
+// neighbourhood, which would otherwise reach the ground beyond the face.
 TEST(SweepHalfPlanes, UntexturedSideIsRejected) {
   TestScene scene;
   scene.quads = {Face(1, 30, 6, true, 3, 3), Face(-1, 40, 6, false, 4, 3)};
+  const std::vector<Segment3> eaves = {Eave(scene.quads[0]), Eave(scene.quads[1])};
   const Block block = sweep_test::FourViewBlock();
-  const auto r = Sweep(scene, block);
+  const auto r = Sweep(scene, block, SweepOptions(), eaves);
   EXPECT_TRUE(SideOf(r, 1).accepted) << SideOf(r, 1).reason;
   EXPECT_NEAR(SideOf(r, 1).theta_deg, -30.0, 1.0);
   const HalfPlane& flat = SideOf(r, -1);
@@ -83,7 +92,7 @@ TEST(SweepHalfPlanes, UntexturedSideIsRejected) {
   noisy.poi_canny_low = 0.5;
   noisy.poi_canny_high = 1.0;
   noisy.poi_blur_sigma = 0;
-  const HalfPlane noise = SideOf(Sweep(scene, block, noisy), -1);
+  const HalfPlane noise = SideOf(Sweep(scene, block, noisy, eaves), -1);
   EXPECT_GE(noise.points_detected, 20);
   EXPECT_FALSE(noise.accepted);
   std::cout << "untextured side, noise as texture: " << noise.reason << " (points "

@@ -10,7 +10,7 @@ namespace sweep_test {
 namespace {
 
 // Sum of sinusoids with wavelengths 0.25..2.5 m in the surface's metric
-// coordinates: texture at every scale the sweep's 5 x 5 windows see.
+// coordinates: texture at every scale the sweep's 7 x 7 windows see.
 struct Waves {
   static constexpr int kCount = 14;
   double kx[kCount], ky[kCount], phase[kCount], gain[kCount][3];
