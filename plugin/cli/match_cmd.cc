@@ -19,6 +19,9 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.overwrite, "replace an existing output file")
       .Option("-truth", &r.truth, "FILE",
               "groundtruth_edges.json of `roofsweep simulate`: true-pair counts and line scores")
+      .Option("-chromatic_factor", &r.match.threshold_factor, "F",
+              "chromatic thresholds = F x median statistic of the best candidates (default 8)")
+      .Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
       .Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
   if (!p.Parse(args)) return 0;
