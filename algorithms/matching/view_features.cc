@@ -102,7 +102,7 @@ SideColour RegionColour(const cv::Mat& lab, const std::vector<Eigen::Vector2d>& 
   if (static_cast<int>(ab.size()) < options.min_region_pixels) return sc;
   // A regular subsample keeps the estimator cheap on long segments; the
   // tests cap n at max_test_pixels anyway.
-  const size_t cap = 250;
+  const size_t cap = 150;
   if (ab.size() > cap) {
     std::vector<Eigen::Vector2d> sub;
     sub.reserve(cap);
