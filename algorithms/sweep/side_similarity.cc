@@ -75,6 +75,13 @@ SideSimilarity::SideSimilarity(const Block& block, const std::vector<ViewTexture
     o.grey = &textures.at(v).grey;
     views_.push_back(o);
   }
+  active_views_.assign(views_.size(), true);
+}
+
+int SideSimilarity::ActiveViewCount() const {
+  int n = 0;
+  for (bool a : active_views_) n += a;
+  return n;
 }
 
 int SideSimilarity::ActiveCount() const {
@@ -83,14 +90,18 @@ int SideSimilarity::ActiveCount() const {
   return n;
 }
 
-double SideSimilarity::Evaluate(double theta, std::vector<double>* per_point) const {
+double SideSimilarity::Evaluate(double theta, std::vector<double>* per_point,
+                                std::vector<double>* per_view) const {
   if (per_point) per_point->assign(points_.size(), 0.0);
+  if (per_view) per_view->assign(views_.size(), 0.0);
+  const int n_active_views = ActiveViewCount();
   const auto v = PlaneVector(*ref_camera_, *ref_pose_, family_.Plane(theta));
   if (!v || views_.empty()) return 0.0;
   std::vector<Eigen::Matrix3d> H;
   H.reserve(views_.size());
   for (const OtherView& o : views_) H.push_back(o.pair.A + o.pair.a * v->transpose());
   std::vector<float> samples(window_size_);
+  std::vector<double> view_sum(views_.size(), 0.0);
   double numerator = 0, weights = 0;
   for (size_t pi = 0; pi < points_.size(); ++pi) {
     const Point& p = points_[pi];
@@ -100,6 +111,7 @@ double SideSimilarity::Evaluate(double theta, std::vector<double>* per_point) co
     // The plane must be in front of the reference camera at this point.
     if (!(v->dot(p.window[window_size_ / 2]) > 0)) continue;
     for (size_t vi = 0; vi < views_.size(); ++vi) {
+      if (!per_view && !active_views_[vi]) continue;
       const OtherView& o = views_[vi];
       bool inside = true;
       double mean = 0;
@@ -126,13 +138,18 @@ double SideSimilarity::Evaluate(double theta, std::vector<double>* per_point) co
       }
       if (!(ss > 1e-12)) continue;
       const double cor = dot / std::sqrt(ss);
-      if (cor > 0) point_sum += cor * cor;
+      if (!(cor > 0)) continue;
+      view_sum[vi] += p.weight * cor * cor;
+      if (active_views_[vi]) point_sum += cor * cor;
     }
     numerator += p.weight * point_sum;
-    if (per_point) (*per_point)[pi] = point_sum / views_.size();
+    if (per_point && n_active_views > 0) (*per_point)[pi] = point_sum / n_active_views;
   }
   if (!(weights > 0)) return 0.0;
-  return numerator / (weights * views_.size());
+  if (per_view)
+    for (size_t vi = 0; vi < views_.size(); ++vi) (*per_view)[vi] = view_sum[vi] / weights;
+  if (n_active_views == 0) return 0.0;
+  return numerator / (weights * n_active_views);
 }
 
 }  // namespace roofsweep

@@ -28,15 +28,22 @@ class SideSimilarity {
                  const std::vector<int>& other_views, const std::vector<BandPoint>& points,
                  const SweepOptions& options);
 
-  // Sim at theta (radians) over the active points. When `per_point` is
-  // given it receives each point's mean Cor+^2 over the views.
-  double Evaluate(double theta, std::vector<double>* per_point = nullptr) const;
+  // Sim at theta (radians) over the active points and views. When
+  // `per_point` is given it receives each point's mean Cor+^2 over the
+  // active views; `per_view` receives each view's weighted mean Cor+^2 over
+  // the active points (every view, active or not).
+  double Evaluate(double theta, std::vector<double>* per_point = nullptr,
+                  std::vector<double>* per_view = nullptr) const;
 
   int PointCount() const { return static_cast<int>(points_.size()); }
   int ActiveCount() const;
   int ViewCount() const { return static_cast<int>(views_.size()); }
   // Restricts the sum to the points with active[i] true.
   void SetActive(const std::vector<bool>& active) { active_ = active; }
+  // Restricts the sum to the views (in the constructor's order) with
+  // active[i] true.
+  void SetActiveViews(const std::vector<bool>& active) { active_views_ = active; }
+  int ActiveViewCount() const;
 
  private:
   struct Point {
@@ -57,6 +64,7 @@ class SideSimilarity {
   std::vector<Point> points_;
   std::vector<OtherView> views_;
   std::vector<bool> active_;
+  std::vector<bool> active_views_;
   int window_size_;
 };
 

@@ -145,6 +145,18 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
     sim.SetActive(active);
     hp.points = sim.ActiveCount();
   }
+  // Valid views (§3.3): views where the kept points correlate poorly at the
+  // coarse maximum are probably occluded there and are left out.
+  {
+    std::vector<double> view_score;
+    sim.Evaluate(theta, nullptr, &view_score);
+    const double best = *std::max_element(view_score.begin(), view_score.end());
+    std::vector<bool> valid(view_score.size());
+    for (size_t i = 0; i < view_score.size(); ++i)
+      valid[i] = view_score[i] >= o.valid_view_ratio * best;
+    sim.SetActiveViews(valid);
+    hp.views = sim.ActiveViewCount();
+  }
 
   // Parabolic refinement, halving the bracket until it is below the
   // tolerance.

@@ -33,10 +33,11 @@ struct HalfPlane {
   double curvature = 0;     // Sim''(theta*) per rad^2 (negative at a maximum)
   int points = 0;           // points of interest used (after outlier removal)
   int points_detected = 0;  // points of interest in the neighbourhood
-  int views = 0;            // views besides the reference in Sim
+  int views = 0;            // valid views besides the reference in Sim
   bool accepted = false;
   std::string reason;  // why not accepted; empty when accepted
-  // Sim at the coarse samples theta_min, theta_min + step, ... (all points).
+  // Sim at the coarse samples theta_min, theta_min + step, ... (all points
+  // and views, before outlier removal and the valid-view test).
   std::vector<double> profile;
 };
 

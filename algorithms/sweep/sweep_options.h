@@ -62,6 +62,11 @@ struct SweepOptions {
   // correlation over the views at the coarse maximum is below this are
   // dropped, keeping at least the better half of the points.
   double outlier_min_score = 0.1;
+  // Valid views (paper §3.3: "a sufficient number of high correlation
+  // scores"): after outlier removal, a view whose weighted mean squared
+  // correlation at the coarse maximum is below this fraction of the best
+  // view's is dropped from Sim (occlusion, strong perspective change).
+  double valid_view_ratio = 0.5;
 
   // Lines steeper than this (deg from horizontal) have no horizontal side.
   double max_line_slope_deg = 80.0;

@@ -157,6 +157,8 @@ int main(int argc, char** argv) {
       options.poi_canny_high = value;
     else if (key == "outlier_min_score")
       options.outlier_min_score = value;
+    else if (key == "valid_view_ratio")
+      options.valid_view_ratio = value;
     else if (key == "coarse_step_deg")
       options.coarse_step_deg = value;
     else {
