@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
@@ -92,7 +93,7 @@ int main(int argc, char** argv) {
                                    : cache + "/" + preset + "_" + std::to_string(so.seed) + "_" +
                                          std::to_string(i) + ".png";
       cv::Mat image;
-      if (!path.empty()) {
+      if (!path.empty() && std::ifstream(path).good()) {
         image = cv::imread(path, cv::IMREAD_COLOR);
         if (!image.empty()) cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
       }
