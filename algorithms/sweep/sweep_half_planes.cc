@@ -18,9 +18,10 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 
 struct Projected {
-  bool front = false;   // both end points in front of the camera
-  bool inside = false;  // ... and inside the image (with the margin)
-  Eigen::Vector2d p0, p1;
+  bool front = false;      // both end points in front of the camera
+  bool inside = false;     // a part of at least min_visible_px inside the image (with the margin)
+  Eigen::Vector2d p0, p1;  // the whole line
+  Eigen::Vector2d v0, v1;  // the part inside the image
 };
 
 std::string Format(const char* fmt, double a, double b) {
@@ -89,7 +90,7 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
     const std::vector<Segment2> blockers = o.clip_at_other_lines
                                                ? Blockers(projected, v, line, o.band_width_px)
                                                : std::vector<Segment2>();
-    std::vector<BandPoint> pts = BandPoints(textures[v], p.p0, p.p1, image_side[v], blockers, o);
+    std::vector<BandPoint> pts = BandPoints(textures[v], p.v0, p.v1, image_side[v], blockers, o);
     if (hp.reference_view < 0 || pts.size() > best_points.size()) {
       hp.reference_view = v;
       best_points.swap(pts);
@@ -238,7 +239,26 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv:
       p.front = true;
       p.p0 = *a;
       p.p1 = *b;
-      p.inside = in(*a) && in(*b);
+      if (in(*a) && in(*b)) {
+        p.v0 = *a;
+        p.v1 = *b;
+      } else {
+        // The image is convex, so the inside part is one interval of the
+        // line; found on a grid of 1/64 of the line (inner samples kept).
+        constexpr int kSteps = 64;
+        int first = -1, last = -1;
+        for (int k = 0; k <= kSteps; ++k) {
+          const auto q = Project(cam, pose, lines[i].segment.At(static_cast<double>(k) / kSteps));
+          if (q && in(*q)) {
+            if (first < 0) first = k;
+            last = k;
+          }
+        }
+        if (first < 0 || last <= first) continue;
+        p.v0 = *Project(cam, pose, lines[i].segment.At(static_cast<double>(first) / kSteps));
+        p.v1 = *Project(cam, pose, lines[i].segment.At(static_cast<double>(last) / kSteps));
+      }
+      p.inside = (p.v1 - p.v0).norm() >= options.min_visible_px;
     }
   });
 

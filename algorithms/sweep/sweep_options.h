@@ -70,9 +70,12 @@ struct SweepOptions {
 
   // Lines steeper than this (deg from horizontal) have no horizontal side.
   double max_line_slope_deg = 80.0;
-  // A view sees the line when both projected end points are at least this
-  // far (px) inside the image and in front.
+  // A view sees the line when both end points are in front and a part of
+  // at least min_visible_px of its projection is view_margin_px (plus the
+  // NCC radius) inside the image; in the reference view the band follows
+  // that part only.
   double view_margin_px = 4.0;
+  double min_visible_px = 20.0;
 };
 
 }  // namespace roofsweep
