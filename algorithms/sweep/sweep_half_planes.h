@@ -15,7 +15,8 @@ namespace roofsweep {
 // A 3D line to sweep. The sweep needs only the end points; `views` (block
 // view indices where the line was observed, as matching's
 // Line3D::observations give them) restricts the choice of the reference
-// view when not empty. Every view that sees the line takes part in Sim.
+// view when not empty. Every view that sees a part of the line (see
+// SweepOptions::min_visible_px) takes part in Sim.
 struct SweepLine {
   Segment3 segment;
   std::vector<int> views;

@@ -125,6 +125,28 @@ TEST(SweepHalfPlanes, EaveOverWallHasNoOuterHalfPlane) {
             << outer.similarity << ", curvature " << outer.curvature << ")\n";
 }
 
+// A line longer than any view's footprint (no view holds both end points)
+// is swept on the parts the views see.
+TEST(SweepHalfPlanes, LinePartlyOutsideEveryView) {
+  TestScene scene;
+  // Faces 60 m long along x; the views cover x in [-40.8, 16.8] and
+  // [-16.8, 40.8] at the ridge's height.
+  scene.quads = {Face(1, 30, 6, true, 3, 25), Face(-1, 40, 6, true, 4, 25)};
+  const Segment3 long_ridge{{-5, 0, 10}, {45, 0, 10}};
+  const Block block = sweep_test::FourViewBlock();
+  NullProgress progress;
+  const auto r = SweepHalfPlanes(block, sweep_test::RenderAll(scene, block),
+                                 {SweepLine{long_ridge, {}}}, SweepOptions(), progress);
+  ASSERT_EQ(r.size(), 2u);
+  for (int side : {1, -1}) {
+    const HalfPlane& h = SideOf(r, side);
+    SCOPED_TRACE(side);
+    EXPECT_TRUE(h.accepted) << h.reason;
+    EXPECT_NEAR(h.theta_deg, side > 0 ? -30.0 : -40.0, 1.0);
+    EXPECT_EQ(h.views, 3);
+  }
+}
+
 TEST(SweepHalfPlanes, DeterministicAcrossThreadCounts) {
   TestScene scene;
   scene.quads = {Face(1, 25, 6, true, 7), Face(-1, 35, 6, true, 8)};
