@@ -162,6 +162,11 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   SubProgress render(progress, 0.0, 0.8);
   const sim::SimulationResult sim =
       sim::Simulate(o, render, r.citygml.empty() ? nullptr : &input);
+  if (sim.truth.city.buildings.empty() && r.citygml.empty() && o.scene.building_count > 0) {
+    // The generator places a building only where two views see all of it.
+    throw Error("simulate: no building fits inside two views; use larger images (-size), a "
+                "coarser -gsd or more -views");
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

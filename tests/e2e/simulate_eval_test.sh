@@ -6,7 +6,7 @@ XSD_REL=schemas/citygml-2.0/CityGML-2.0-all.xsd
 # A small block: 2 views of 512 px over a few buildings.
 SIM="$WORK/sim"
 small_block() {
-  [[ -d "$SIM" ]] || "$RS" simulate -preset easy -seed 5 -size 512 -strips 1 -views 2 -buildings 4 -o "$SIM" -q
+  [[ -d "$SIM" ]] || "$RS" simulate -preset easy -seed 5 -size 512 -gsd 0.15 -strips 1 -views 2 -buildings 4 -o "$SIM" -q
 }
 
 test_simulate_writes_a_readable_block() {
@@ -28,7 +28,7 @@ assert j['overlaps'] and j['overlaps'][0]['fraction'] > 0.5" "$WORK/stdout.txt" 
 
 test_simulate_is_deterministic() {
   small_block || return
-  "$RS" simulate -preset easy -seed 5 -size 512 -strips 1 -views 2 -buildings 4 -o "$WORK/again" -q
+  "$RS" simulate -preset easy -seed 5 -size 512 -gsd 0.15 -strips 1 -views 2 -buildings 4 -o "$WORK/again" -q
   if diff -r -q "$SIM/images" "$WORK/again/images" >/dev/null && cmp -s "$SIM/groundtruth.gml" "$WORK/again/groundtruth.gml" &&
     cmp -s "$SIM/block.json" "$WORK/again/block.json"; then
     pass same_seed_same_bytes
@@ -110,6 +110,7 @@ assert j['roof_planes']['correctness']==1 and j['geometry']['vertex_rms_m'] < 0.
 }
 
 test_bad_input() {
+  expect_fail no_building_fits "$WORK/tiny" "no building fits" -- simulate -preset easy -size 256 -gsd 0.05 -strips 1 -views 2 -o "$WORK/tiny"
   expect_fail unknown_preset "$WORK/x" "preset" -- simulate -preset nonsense -o "$WORK/x"
   expect_fail missing_citygml "$WORK/y" "nope.gml" -- simulate -citygml "$WORK/nope.gml" -o "$WORK/y"
   small_block || return
