@@ -4,6 +4,7 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <GeographicLib/UTMUPS.hpp>
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 
@@ -234,7 +235,12 @@ BlockManifest ReadOpenSfm(const std::vector<std::string>& sources, const ImportO
     std::sort(h.begin(), h.end());
     const OpenSfmImportOptions defaults;
     const size_t k = static_cast<size_t>(defaults.ground_percentile / 100.0 * (h.size() - 1));
-    manifest.ground_height = h[k];
+    // Street-level sets see mostly facades: their low percentile lies above
+    // the cameras. A ground above a camera contradicts the block, so the
+    // ground then stays unknown rather than wrong.
+    double lowest_camera = std::numeric_limits<double>::infinity();
+    for (const auto& image : pending) lowest_camera = std::min(lowest_camera, image.position.z());
+    if (h[k] < lowest_camera) manifest.ground_height = h[k];
   }
 
   const std::string folder = FolderOf(path);

@@ -102,7 +102,15 @@ assert all(3 < i['gsd_m'] < 8 for i in im), [i['gsd_m'] for i in im]" "$WORK/std
   s=$(shared_or_skip data/multiview/opensfm-berlin/reconstruction_example.json)
   if [[ -n "$s" ]]; then
     expect_ok import_opensfm import opensfm "$s" -o "$WORK/berlin.json" &&
-      expect_ok info_opensfm info "$WORK/berlin.json"
+      expect_ok info_opensfm info "$WORK/berlin.json" --json &&
+      python3 -c "
+import json,sys; j=json.load(open(sys.argv[1])); im=j['images']
+assert len(im)==3 and j['crs']=='EPSG:32633', j['crs']
+# Street-level photos: no ground is claimed, no camera is 'below the ground',
+# and the GSD on the facades the cameras converge on is millimetres.
+assert not any('below the ground' in w for w in j['warnings']), j['warnings']
+assert all(0.0005 < i['gsd_m'] < 0.05 for i in im), [i['gsd_m'] for i in im]" "$WORK/stdout.txt" \
+      && pass berlin_street_level_plausible || fail berlin_street_level_plausible "$(head -c 600 "$WORK/stdout.txt")"
   fi
   s=$(shared_or_skip data/multiview/orthority-odm-drone)
   if [[ -n "$s" ]]; then
