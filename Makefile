@@ -26,6 +26,7 @@ test: build
 
 $(BUILD_SAN)/build.ninja:
 	cmake -S . -B $(BUILD_SAN) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
 	  -DROOFSWEEP_SANITIZE=ON -DROOFSWEEP_BENCHMARKS=OFF $(CMAKE_ARGS)
 
 # Unit tests under AddressSanitizer + UndefinedBehaviorSanitizer.
