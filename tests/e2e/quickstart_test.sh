@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# examples/quickstart.sh must run as written.
+source "$(dirname "$0")/lib.sh"
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+
+test_quickstart_runs() {
+  if "$ROOT/examples/quickstart.sh" "$RS" "$WORK/q" >"$WORK/out.txt" 2>"$WORK/err.txt"; then
+    pass quickstart_exit_0
+  else
+    fail quickstart_exit_0 "$(tail -5 "$WORK/err.txt")"
+    return
+  fi
+  for f in block.json lines.gpkg lines3d.gpkg model.city.json model.fgb model.gpkg overlay.png; do
+    [[ -s "$WORK/q/$f" ]] && pass "quickstart_wrote_$f" || fail "quickstart_wrote_$f" "missing"
+  done
+  grep -q "completeness" "$WORK/out.txt" && pass quickstart_prints_scores || fail quickstart_prints_scores "no table"
+}
+
+run_tests
