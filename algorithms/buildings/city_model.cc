@@ -8,31 +8,50 @@ namespace roofsweep {
 
 const char* SurfaceTypeName(SurfaceType t) {
   switch (t) {
-    case SurfaceType::kRoof: return "RoofSurface";
-    case SurfaceType::kWall: return "WallSurface";
-    case SurfaceType::kGround: return "GroundSurface";
-    case SurfaceType::kClosure: return "ClosureSurface";
+    case SurfaceType::kRoof:
+      return "RoofSurface";
+    case SurfaceType::kWall:
+      return "WallSurface";
+    case SurfaceType::kGround:
+      return "GroundSurface";
+    case SurfaceType::kClosure:
+      return "ClosureSurface";
   }
   return "?";
 }
 
 const char* RoofTypeName(int code) {
   switch (code) {
-    case roof_type::kFlat: return "flat";
-    case roof_type::kMonopitch: return "monopitch";
-    case roof_type::kDualPent: return "dual-pent";
-    case roof_type::kGabled: return "gabled";
-    case roof_type::kHipped: return "hipped";
-    case roof_type::kHalfHipped: return "half-hipped";
-    case roof_type::kMansard: return "mansard";
-    case roof_type::kPavilion: return "pavilion";
-    case roof_type::kCone: return "cone";
-    case roof_type::kCupola: return "cupola";
-    case roof_type::kSawtooth: return "sawtooth";
-    case roof_type::kArch: return "arch";
-    case roof_type::kPyramidalBroach: return "pyramidal-broach";
-    case roof_type::kCombination: return "combination";
-    default: return "unknown";
+    case roof_type::kFlat:
+      return "flat";
+    case roof_type::kMonopitch:
+      return "monopitch";
+    case roof_type::kDualPent:
+      return "dual-pent";
+    case roof_type::kGabled:
+      return "gabled";
+    case roof_type::kHipped:
+      return "hipped";
+    case roof_type::kHalfHipped:
+      return "half-hipped";
+    case roof_type::kMansard:
+      return "mansard";
+    case roof_type::kPavilion:
+      return "pavilion";
+    case roof_type::kCone:
+      return "cone";
+    case roof_type::kCupola:
+      return "cupola";
+    case roof_type::kSawtooth:
+      return "sawtooth";
+    case roof_type::kArch:
+      return "arch";
+    case roof_type::kPyramidalBroach:
+      return "pyramidal-broach";
+    case roof_type::kCombination:
+      return "combination";
+    default:
+      return "unknown";
   }
 }
 

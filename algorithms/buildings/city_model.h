@@ -76,6 +76,18 @@ struct CityModel {
 
   // Axis-aligned bounds of all vertices: (min x, min y, min z, max x, max y, max z).
   Eigen::Matrix<double, 6, 1> Bounds() const;
+
+  // Replaces every vertex v by f(v) (a change of frame or CRS, a shift).
+  template <typename F>
+  void TransformVertices(F f) {
+    for (Building& b : buildings)
+      for (Surface& s : b.surfaces)
+        for (Polygon3& p : s.polygons) {
+          for (auto& v : p.exterior) v = f(v);
+          for (auto& h : p.holes)
+            for (auto& v : h) v = f(v);
+        }
+  }
 };
 
 }  // namespace roofsweep

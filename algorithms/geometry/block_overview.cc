@@ -105,7 +105,8 @@ BlockOverview AnalyzeBlock(const Block& block, const BlockOverviewOptions& optio
     const Camera& cam = block.CameraOf(view);
     ViewFootprint& fp = out.footprints.emplace_back();
     fp.height_above_plane_m = n.dot(view.pose.C) + out.plane(3);
-    fp.off_nadir_deg = std::acos(std::clamp(-n.dot(view.pose.ViewingDirection()), -1.0, 1.0)) * kRadToDeg;
+    fp.off_nadir_deg =
+        std::acos(std::clamp(-n.dot(view.pose.ViewingDirection()), -1.0, 1.0)) * kRadToDeg;
     if (fp.height_above_plane_m <= 0) {
       out.warnings.push_back("image '" + view.name + "': camera is " +
                              (out.plane_is_ground ? "below the ground" : "behind the scene plane") +
@@ -129,7 +130,7 @@ BlockOverview AnalyzeBlock(const Block& block, const BlockOverviewOptions& optio
       for (int k = 0; k < s; ++k) {
         const double t = static_cast<double>(k) / s;
         const double W = cam.width, H = cam.height;
-        const Eigen::Vector2d px = side == 0 ? Eigen::Vector2d(t * W, 0)
+        const Eigen::Vector2d px = side == 0   ? Eigen::Vector2d(t * W, 0)
                                    : side == 1 ? Eigen::Vector2d(W, t * H)
                                    : side == 2 ? Eigen::Vector2d(W - t * W, H)
                                                : Eigen::Vector2d(0, H - t * H);

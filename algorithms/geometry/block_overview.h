@@ -15,8 +15,8 @@ struct ViewFootprint {
   bool valid = false;                    // enough of the image border meets the plane
   std::vector<Eigen::Vector3d> outline;  // convex outline on the reference plane, world
   double area_m2 = 0;
-  double gsd_m = 0;       // metres per pixel where the optical axis meets the plane
-  double distance_m = 0;  // camera centre to that point
+  double gsd_m = 0;                 // metres per pixel where the optical axis meets the plane
+  double distance_m = 0;            // camera centre to that point
   double height_above_plane_m = 0;  // signed: negative = camera below the ground
   double off_nadir_deg = 0;         // angle between the optical axis and the plane normal
 };

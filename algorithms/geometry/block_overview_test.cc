@@ -88,7 +88,7 @@ TEST(BlockOverview, DivergingAxesWithoutGroundGiveNoGsd) {
   Block b = NadirStrip(2, 100);
   b.ground = GroundModel{};
   // Tilt the two cameras 30 degrees away from each other.
-  b.views[0].pose.R = PatbToCv(OpkToRotation(0, 30, 0));  // looks towards -x
+  b.views[0].pose.R = PatbToCv(OpkToRotation(0, 30, 0));   // looks towards -x
   b.views[1].pose.R = PatbToCv(OpkToRotation(0, -30, 0));  // towards +x
   const BlockOverview o = AnalyzeBlock(b);
   ASSERT_EQ(o.footprints.size(), 2u);

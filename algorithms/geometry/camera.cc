@@ -13,9 +13,7 @@ Eigen::Matrix3d Camera::K() const {
   return k;
 }
 
-bool Camera::HasDistortion() const {
-  return k1 != 0 || k2 != 0 || k3 != 0 || p1 != 0 || p2 != 0;
-}
+bool Camera::HasDistortion() const { return k1 != 0 || k2 != 0 || k3 != 0 || p1 != 0 || p2 != 0; }
 
 Eigen::Vector2d Camera::Distort(const Eigen::Vector2d& u) const {
   const double x = u.x(), y = u.y();

@@ -41,7 +41,7 @@ TEST(Opk, NadirCameraLooksDown) {
   // optical axis (third row of R_cv) points down.
   const Eigen::Matrix3d r_cv = PatbToCv(OpkToRotation(0, 0, 0));
   EXPECT_NEAR(r_cv(2, 2), -1.0, 1e-15);
-  EXPECT_NEAR(r_cv(0, 0), 1.0, 1e-15);  // image x is east
+  EXPECT_NEAR(r_cv(0, 0), 1.0, 1e-15);   // image x is east
   EXPECT_NEAR(r_cv(1, 1), -1.0, 1e-15);  // image y (down) is south
 }
 

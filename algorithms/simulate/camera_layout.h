@@ -27,7 +27,7 @@ struct SimulatedView {
 struct CameraLayoutOptions {
   int image_width = 2048;
   int image_height = 2048;
-  double gsd = 0.10;     // m per pixel on the ground (nadir), 0.05..0.15 typical
+  double gsd = 0.10;  // m per pixel on the ground (nadir), 0.05..0.15 typical
   // With pixel_size_um gives the focal length in pixels. 12 mm on a 2048 px
   // chip of 4.6 um (9.4 mm) is a 43 deg field of view, that of the frame
   // cameras aerial blocks are flown with (DMC: 120 mm on 92 mm along track;

@@ -1,12 +1,13 @@
 #include "io/citymodel/segments_json.h"
 
+#include <ogrsf_frmts.h>
+
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <ogrsf_frmts.h>
 
 #include "algorithms/core/error.h"
 #include "io/citymodel/output_file.h"
@@ -107,8 +108,8 @@ SegmentSet ReadSegments(const std::string& path, const std::string& layer_name) 
     if (text.find("roofsweep_segments") != std::string::npos) return ReadSegmentsJson(path);
   }
   GDALAllRegister();
-  std::unique_ptr<GDALDataset> ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
+                                                    nullptr, nullptr, nullptr));
   if (!ds) throw Error(path + ": not a segments document nor a vector dataset GDAL can open");
   OGRLayer* layer = nullptr;
   if (!layer_name.empty()) {

@@ -168,8 +168,8 @@ void CheckImageReadable(const std::string& path) {
     const int x0 = std::max(0, info.width - bx), y0 = std::max(0, info.height - by);
     const int w = info.width - x0, h = info.height - y0;
     std::vector<float> buf(static_cast<size_t>(w) * h);
-    const CPLErr err = band->RasterIO(GF_Read, x0, y0, w, h, buf.data(), w, h, GDT_Float32, 0, 0,
-                                      nullptr);
+    const CPLErr err =
+        band->RasterIO(GF_Read, x0, y0, w, h, buf.data(), w, h, GDT_Float32, 0, 0, nullptr);
     if (err != CE_None || errors.HasFailure()) ThrowReadError(path, errors);
   }
 }

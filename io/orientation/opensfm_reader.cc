@@ -4,9 +4,9 @@
 #include <GeographicLib/LocalCartesian.hpp>
 #include <GeographicLib/UTMUPS.hpp>
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "algorithms/core/error.h"
 #include "algorithms/geometry/rotation.h"

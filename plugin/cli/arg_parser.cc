@@ -43,8 +43,8 @@ ArgParser& ArgParser::Flag(const std::string& names, bool* out, const std::strin
   return Add(names, "", help, [out](const std::string&) { *out = true; });
 }
 
-ArgParser& ArgParser::Option(const std::string& names, std::string* out,
-                             const std::string& metavar, const std::string& help) {
+ArgParser& ArgParser::Option(const std::string& names, std::string* out, const std::string& metavar,
+                             const std::string& help) {
   return Add(names, metavar, help, [out](const std::string& v) { *out = v; });
 }
 
@@ -73,8 +73,8 @@ ArgParser& ArgParser::Repeated(const std::string& names, std::vector<std::string
       names, metavar, help, [out](const std::string& v) { out->push_back(v); }, true);
 }
 
-ArgParser& ArgParser::Positional(const std::string& name, std::string* out,
-                                 const std::string& help, bool required) {
+ArgParser& ArgParser::Positional(const std::string& name, std::string* out, const std::string& help,
+                                 bool required) {
   Pos p;
   p.name = name;
   p.help = help;
@@ -137,8 +137,8 @@ bool ArgParser::ParseOrThrow(const std::vector<std::string>& args) {
       return false;
     }
     // A lone "-" and negative numbers are values, not options.
-    const bool looks_like_option =
-        a.size() > 1 && a[0] == '-' && !(std::isdigit(static_cast<unsigned char>(a[1])) || a[1] == '.');
+    const bool looks_like_option = a.size() > 1 && a[0] == '-' &&
+                                   !(std::isdigit(static_cast<unsigned char>(a[1])) || a[1] == '.');
     if (!looks_like_option) {
       positionals.push_back(a);
       continue;
@@ -149,7 +149,8 @@ bool ArgParser::ParseOrThrow(const std::vector<std::string>& args) {
     if (o->metavar.empty()) {
       o->set("");
     } else {
-      if (i + 1 >= args.size()) throw UsageError{"Option " + a + " needs a value (" + o->metavar + ")"};
+      if (i + 1 >= args.size())
+        throw UsageError{"Option " + a + " needs a value (" + o->metavar + ")"};
       o->set(args[++i]);
     }
   }
@@ -195,7 +196,8 @@ std::string ArgParser::Usage() const {
   s << Synopsis() << "\n\n" << purpose_ << "\n";
   if (!pos_.empty()) {
     s << "\nArguments:\n";
-    for (const Pos& p : pos_) s << "  " << p.name << (p.many ? "..." : "") << "\n      " << p.help << "\n";
+    for (const Pos& p : pos_)
+      s << "  " << p.name << (p.many ? "..." : "") << "\n      " << p.help << "\n";
   }
   if (!opts_.empty()) {
     s << "\nOptions:\n";

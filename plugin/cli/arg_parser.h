@@ -50,7 +50,7 @@ class ArgParser {
   // Returns false when --help was given (usage already printed to stdout).
   bool Parse(const std::vector<std::string>& args);
 
-  std::string Usage() const;  // the full --help text
+  std::string Usage() const;     // the full --help text
   std::string Synopsis() const;  // one line: "Usage: roofsweep cmd [-x ...] IN OUT"
   const std::string& command() const { return command_; }
   const std::string& purpose() const { return purpose_; }

@@ -46,11 +46,11 @@ TEST(ArgParser, WrongUsageThrowsWithSynopsis) {
     EXPECT_EQ(e.message, "Unknown option name '-bogus'");
     EXPECT_NE(e.synopsis.find("Usage: roofsweep info"), std::string::npos);
   }
-  EXPECT_THROW(make().Parse({}), UsageError);              // missing argument
-  EXPECT_THROW(make().Parse({"x", "-n"}), UsageError);     // missing value
+  EXPECT_THROW(make().Parse({}), UsageError);                  // missing argument
+  EXPECT_THROW(make().Parse({"x", "-n"}), UsageError);         // missing value
   EXPECT_THROW(make().Parse({"x", "-n", "1.5"}), UsageError);  // not whole
   EXPECT_THROW(make().Parse({"x", "-n", "nan"}), UsageError);
-  EXPECT_THROW(make().Parse({"x", "y"}), UsageError);      // too many
+  EXPECT_THROW(make().Parse({"x", "y"}), UsageError);  // too many
 }
 
 TEST(ArgParser, KeyValue) {

@@ -10,7 +10,7 @@ namespace roofsweep::cli {
 
 // What every subcommand gets besides its own arguments.
 struct Context {
-  bool quiet = false;  // -q: no progress, no summary chatter
+  bool quiet = false;            // -q: no progress, no summary chatter
   Progress* progress = nullptr;  // GDAL term progress, or a null one with -q
 };
 

@@ -10,8 +10,9 @@ namespace {
 int Convert(const std::vector<std::string>& args, Context& ctx) {
   ConvertRequest r;
   bool no_check = false;
-  ArgParser p("convert", "Converts a LoD2 model between CityGML 2.0, CityJSON 2.0, CityJSONSeq, "
-                         "GeoPackage and other OGR vector formats.");
+  ArgParser p("convert",
+              "Converts a LoD2 model between CityGML 2.0, CityJSON 2.0, CityJSONSeq, "
+              "GeoPackage and other OGR vector formats.");
   p.Positional("IN", &r.input, "input model (.gml CityGML 1.0/2.0, .city.json, .city.jsonl, .gpkg)")
       .Positional("OUT", &r.output, "output model; the format follows the extension unless -of")
       .Option("-of|-f", &r.write.format, "FORMAT",
@@ -31,7 +32,8 @@ int Convert(const std::vector<std::string>& args, Context& ctx) {
   if (!ctx.quiet) {
     std::cout << "Wrote " << r.output << " (" << s.format << "): " << s.buildings << " buildings, "
               << s.surfaces << " surfaces";
-    if (s.invalid_buildings) std::cout << ", " << s.invalid_buildings << " failing the solid checks";
+    if (s.invalid_buildings)
+      std::cout << ", " << s.invalid_buildings << " failing the solid checks";
     std::cout << "\n";
   }
   return 0;

@@ -17,18 +17,6 @@ namespace fs = std::filesystem;
 namespace roofsweep {
 namespace {
 
-// Coordinates of projected CRSs are large (5e6 m): the evaluator's plan
-// geometry works on coordinates relative to a common origin.
-void Shift(CityModel* m, const Eigen::Vector3d& o) {
-  for (Building& b : m->buildings)
-    for (Surface& s : b.surfaces)
-      for (Polygon3& p : s.polygons) {
-        for (auto& v : p.exterior) v -= o;
-        for (auto& h : p.holes)
-          for (auto& v : h) v -= o;
-      }
-}
-
 bool IsRoofKind(const std::string& kind) {
   // The simulator's roof edge kinds (algorithms/simulate/scene_truth.h).
   for (const char* k : {"ridge", "hip", "valley", "break", "eave", "verge", "wall_top", "step",
@@ -73,14 +61,18 @@ EvalReport RunEval(const EvalRequest& r) {
 
   const auto bounds = truth.Bounds();
   const Eigen::Vector3d origin(std::floor(bounds(0)), std::floor(bounds(1)), 0.0);
-  Shift(&result, origin);
-  Shift(&truth, origin);
+  // Coordinates of projected CRSs are large (5e6 m): the evaluator's plan
+  // geometry works on coordinates relative to a common origin.
+  const auto shift = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(v - origin); };
+  result.TransformVertices(shift);
+  truth.TransformVertices(shift);
 
   std::vector<Segment3> lines, extra;
   if (!r.lines.empty()) {
     const SegmentSet set = ReadSegments(r.lines);
     CheckSameCrs(set.crs, r.lines, truth.crs, truth_path);
-    for (const auto& s : set.segments) lines.push_back({s.segment.a - origin, s.segment.b - origin});
+    for (const auto& s : set.segments)
+      lines.push_back({s.segment.a - origin, s.segment.b - origin});
   }
   if (!edges_path.empty()) {
     // Wall edges and ground markings are true scene edges too: a 3D line on

@@ -10,8 +10,8 @@ ImportSummary RunImport(const ImportRequest& request, Progress& progress) {
   ReportOrCancel(progress, 0.0);
   BlockManifest m = ImportBlock(request.format, request.sources, request.options);
   ReportOrCancel(progress, 0.5);
-  // ImportBlock has validated the manifest and its images. Building the local frame checks what the manifest alone cannot: that
-  // PROJ knows the CRS, that heights are usable, that the DTM reads.
+  // ImportBlock has validated the manifest and its images. Building the local frame checks what the
+  // manifest alone cannot: that PROJ knows the CRS, that heights are usable, that the DTM reads.
   ManifestToBlock(m);
   ReportOrCancel(progress, 0.9);
   WriteManifest(m, request.output, request.overwrite);

@@ -10,7 +10,8 @@ namespace {
 int Info(const std::vector<std::string>& args, Context&) {
   std::string block;
   bool json = false;
-  ArgParser p("info", "Describes a block: images, cameras, CRS, GSD per image, overlap graph, warnings.");
+  ArgParser p("info",
+              "Describes a block: images, cameras, CRS, GSD per image, overlap graph, warnings.");
   p.Positional("BLOCK", &block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
       .Flag("--json|-json", &json, "print one JSON object instead of the table")
       .Example("roofsweep info out/block")

@@ -42,13 +42,16 @@ std::string FormatInfoText(const BlockInfo& info) {
   } else {
     s << "CRS: " << (m.crs.size() > 60 ? m.crs.substr(0, 57) + "..." : m.crs) << "\n";
     const FrameInfo& f = info.block.frame;
-    s << "Local ENU origin: lat " << Fmt("%.7f", f.origin_lat) << ", lon " << Fmt("%.7f", f.origin_lon)
-      << ", h " << Fmt("%.2f", f.origin_h) << " m\n";
+    s << "Local ENU origin: lat " << Fmt("%.7f", f.origin_lat) << ", lon "
+      << Fmt("%.7f", f.origin_lon) << ", h " << Fmt("%.2f", f.origin_h) << " m\n";
   }
   s << "Ground: ";
-  if (m.ground_height) s << "height " << *m.ground_height << "\n";
-  else if (!m.dtm.empty()) s << "DTM " << m.dtm << "\n";
-  else s << "unknown (footprints on the scene plane through the optical axes)\n";
+  if (m.ground_height)
+    s << "height " << *m.ground_height << "\n";
+  else if (!m.dtm.empty())
+    s << "DTM " << m.dtm << "\n";
+  else
+    s << "unknown (footprints on the scene plane through the optical axes)\n";
   s << "Cameras: " << m.cameras.size() << "\n";
   for (const Camera& c : m.cameras) {
     s << "  " << c.id << "  " << c.width << "x" << c.height << "  f " << Fmt("%.2f", c.fx) << " px"
@@ -67,8 +70,7 @@ std::string FormatInfoText(const BlockInfo& info) {
                   "  %-25s %-8s %13.3f %13.3f %10.3f %8.3f %8.3f %9.3f %7.3f %9.1f %8.1f %5d\n",
                   im.name.substr(0, 25).c_str(), im.camera.substr(0, 8).c_str(), im.position.x(),
                   im.position.y(), im.position.z(), opk(0), opk(1), opk(2), fp.gsd_m,
-                  fp.height_above_plane_m, fp.off_nadir_deg,
-                  OverlapCount(o, static_cast<int>(i)));
+                  fp.height_above_plane_m, fp.off_nadir_deg, OverlapCount(o, static_cast<int>(i)));
     s << line;
   }
   s << "Overlap graph (" << o.overlaps.size() << " pairs, fraction of the smaller footprint"
@@ -98,8 +100,13 @@ nlohmann::json InfoToJson(const BlockInfo& info) {
   j["dtm"] = m.dtm.empty() ? json(nullptr) : json(m.dtm);
   j["cameras"] = json::array();
   for (const Camera& c : m.cameras) {
-    j["cameras"].push_back({{"id", c.id}, {"width", c.width}, {"height", c.height}, {"fx", c.fx},
-                            {"fy", c.fy}, {"cx", c.cx}, {"cy", c.cy},
+    j["cameras"].push_back({{"id", c.id},
+                            {"width", c.width},
+                            {"height", c.height},
+                            {"fx", c.fx},
+                            {"fy", c.fy},
+                            {"cx", c.cx},
+                            {"cy", c.cy},
                             {"distortion", c.HasDistortion()}});
   }
   j["images"] = json::array();
@@ -121,7 +128,8 @@ nlohmann::json InfoToJson(const BlockInfo& info) {
   j["footprint_plane"] = o.plane_is_ground ? "ground" : "scene";
   j["overlaps"] = json::array();
   for (const auto& e : o.overlaps) {
-    j["overlaps"].push_back({{"a", m.images[e.a].name}, {"b", m.images[e.b].name}, {"fraction", e.fraction}});
+    j["overlaps"].push_back(
+        {{"a", m.images[e.a].name}, {"b", m.images[e.b].name}, {"fraction", e.fraction}});
   }
   j["warnings"] = o.warnings;
   return j;

@@ -40,10 +40,12 @@ void PrintMainUsage(std::FILE* to) {
   std::fprintf(to,
                "Usage: roofsweep COMMAND [options]   (roofsweep COMMAND --help for details)\n\n"
                "Turns oriented aerial colour images into LoD2 building models.\n\nCommands:\n");
-  for (const auto& c : Registry()) std::fprintf(to, "  %-9s %s\n", c.name.c_str(), c.purpose.c_str());
-  std::fprintf(to,
-               "\nGeneral options (GDAL): --version, --formats, --config KEY VALUE, --debug on|off,\n"
-               "  --optfile FILE, --help-general; -q on any command silences progress.\n");
+  for (const auto& c : Registry())
+    std::fprintf(to, "  %-9s %s\n", c.name.c_str(), c.purpose.c_str());
+  std::fprintf(
+      to,
+      "\nGeneral options (GDAL): --version, --formats, --config KEY VALUE, --debug on|off,\n"
+      "  --optfile FILE, --help-general; -q on any command silences progress.\n");
 }
 
 }  // namespace
@@ -65,7 +67,8 @@ int main(int argc, char** argv) {
   const std::string name = args[0];
   args.erase(args.begin());
   const auto& reg = Registry();
-  const auto it = std::find_if(reg.begin(), reg.end(), [&](const auto& c) { return c.name == name; });
+  const auto it =
+      std::find_if(reg.begin(), reg.end(), [&](const auto& c) { return c.name == name; });
   if (it == reg.end()) {
     CPLError(CE_Failure, CPLE_IllegalArg, "Unknown command '%s'", name.c_str());
     PrintMainUsage(stderr);
@@ -86,10 +89,10 @@ int main(int argc, char** argv) {
     return it->run(args, ctx);
   } catch (const roofsweep::cli::UsageError& e) {
     CPLError(CE_Failure, CPLE_NotSupported, "%s", e.message.c_str());
-    std::fprintf(stderr, "%s\nTry 'roofsweep %s --help' for details.\n",
-                 e.synopsis.empty() ? ("Usage: roofsweep " + name + " ...").c_str()
-                                    : e.synopsis.c_str(),
-                 name.c_str());
+    std::fprintf(
+        stderr, "%s\nTry 'roofsweep %s --help' for details.\n",
+        e.synopsis.empty() ? ("Usage: roofsweep " + name + " ...").c_str() : e.synopsis.c_str(),
+        name.c_str());
     return 1;
   } catch (const roofsweep::Error& e) {
     CPLError(CE_Failure, CPLE_AppDefined, "%s", e.what());

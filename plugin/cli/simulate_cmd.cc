@@ -61,10 +61,11 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
   }
   const SimulateSummary s = RunSimulate(r, *ctx.progress);
   if (!ctx.quiet) {
-    std::printf("Wrote %s: %d views, %d buildings, %d roof planes, %d edges, GSD %.3f m "
-                "(rendered in %.1f s)\n",
-                r.output_dir.c_str(), s.views, s.buildings, s.roof_planes, s.edges, s.gsd_m,
-                s.seconds_render);
+    std::printf(
+        "Wrote %s: %d views, %d buildings, %d roof planes, %d edges, GSD %.3f m "
+        "(rendered in %.1f s)\n",
+        r.output_dir.c_str(), s.views, s.buildings, s.roof_planes, s.edges, s.gsd_m,
+        s.seconds_render);
   }
   return 0;
 }

@@ -27,8 +27,8 @@ class TempFolder {
  public:
   explicit TempFolder(const std::string& final_dir) {
     const fs::path target = fs::absolute(final_dir);
-    path_ = (target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                     std::to_string(::getpid())))
+    path_ = (target.parent_path() /
+             ("." + target.filename().string() + ".tmp" + std::to_string(::getpid())))
                 .string();
     fs::remove_all(path_);
     fs::create_directories(path_);
@@ -90,18 +90,6 @@ std::string CameraYaml(const Camera& c) {
   return out;
 }
 
-// Every vertex of `model` through `f`.
-template <typename F>
-void TransformModel(CityModel* model, F f) {
-  for (Building& b : model->buildings)
-    for (Surface& s : b.surfaces)
-      for (Polygon3& p : s.polygons) {
-        for (auto& v : p.exterior) v = f(v);
-        for (auto& h : p.holes)
-          for (auto& v : h) v = f(v);
-      }
-}
-
 }  // namespace
 
 SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
@@ -153,19 +141,19 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   }
   const LocalFrame frame(crs, origin);
   if (!r.citygml.empty()) {
-    TransformModel(&input, [&](const Eigen::Vector3d& v) { return frame.ToLocal(v); });
+    input.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToLocal(v); });
     input.crs.clear();
   }
 
   TempFolder tmp(r.output_dir);
   const auto t0 = std::chrono::steady_clock::now();
   SubProgress render(progress, 0.0, 0.8);
-  const sim::SimulationResult sim =
-      sim::Simulate(o, render, r.citygml.empty() ? nullptr : &input);
+  const sim::SimulationResult sim = sim::Simulate(o, render, r.citygml.empty() ? nullptr : &input);
   if (sim.truth.city.buildings.empty() && r.citygml.empty() && o.scene.building_count > 0) {
     // The generator places a building only where two views see all of it.
-    throw Error("simulate: no building fits inside two views; use larger images (-size), a "
-                "coarser -gsd or more -views");
+    throw Error(
+        "simulate: no building fits inside two views; use larger images (-size), a "
+        "coarser -gsd or more -views");
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -202,7 +190,7 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   WriteManifest(manifest, dir + "/block.json", false);
 
   CityModel truth = sim.truth.city;
-  TransformModel(&truth, [&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
+  truth.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
   truth.crs = crs;
   WriteCityModel(truth, dir + "/groundtruth.gml");
 
@@ -222,20 +210,20 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   s.gsd_m = o.cameras.gsd;
   s.seconds_render = seconds;
 
-  nlohmann::json meta = {{"preset", r.preset},
-                         {"seed", r.seed},
-                         {"citygml", r.citygml.empty() ? nlohmann::json(nullptr)
-                                                       : nlohmann::json(r.citygml)},
-                         {"crs", crs},
-                         {"origin", {origin.x(), origin.y(), origin.z()}},
-                         {"views", s.views},
-                         {"image_size", {cam.width, cam.height}},
-                         {"gsd_m", s.gsd_m},
-                         {"buildings", s.buildings},
-                         {"roof_planes", s.roof_planes},
-                         {"edges", s.edges},
-                         {"image_format", ext},
-                         {"jpeg_quality", ext == "jpg" ? r.jpeg_quality : 0}};
+  nlohmann::json meta = {
+      {"preset", r.preset},
+      {"seed", r.seed},
+      {"citygml", r.citygml.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.citygml)},
+      {"crs", crs},
+      {"origin", {origin.x(), origin.y(), origin.z()}},
+      {"views", s.views},
+      {"image_size", {cam.width, cam.height}},
+      {"gsd_m", s.gsd_m},
+      {"buildings", s.buildings},
+      {"roof_planes", s.roof_planes},
+      {"edges", s.edges},
+      {"image_format", ext},
+      {"jpeg_quality", ext == "jpg" ? r.jpeg_quality : 0}};
   WriteText(dir + "/simulation.json", meta.dump(2) + "\n");
   tmp.CommitTo(r.output_dir);
   ReportOrCancel(progress, 1.0);

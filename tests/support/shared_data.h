@@ -24,11 +24,11 @@ std::string BinaryDir();
 // Resolves `rel` below the shared folder into a new variable `var`, or skips
 // the test with a visible message; fails instead when
 // ROOFSWEEP_REQUIRE_SHARED=1 (CI).
-#define ROOFSWEEP_SHARED_PATH_OR_SKIP(var, rel)                                        \
-  const std::string var = ::roofsweep::testing::SharedPath(rel);                       \
-  if (var.empty()) {                                                                   \
-    if (::roofsweep::testing::SharedRequired()) {                                      \
-      FAIL() << "shared data missing: " << (rel) << " (ROOFSWEEP_REQUIRE_SHARED=1)";   \
-    }                                                                                  \
-    GTEST_SKIP() << "shared data not found: " << (rel) << " -- skipping";              \
+#define ROOFSWEEP_SHARED_PATH_OR_SKIP(var, rel)                                      \
+  const std::string var = ::roofsweep::testing::SharedPath(rel);                     \
+  if (var.empty()) {                                                                 \
+    if (::roofsweep::testing::SharedRequired()) {                                    \
+      FAIL() << "shared data missing: " << (rel) << " (ROOFSWEEP_REQUIRE_SHARED=1)"; \
+    }                                                                                \
+    GTEST_SKIP() << "shared data not found: " << (rel) << " -- skipping";            \
   }
