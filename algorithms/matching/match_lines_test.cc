@@ -8,59 +8,14 @@
 
 #include "algorithms/core/error.h"
 #include "algorithms/eval/line_eval.h"
-#include "algorithms/simulate/presets.h"
+#include "algorithms/matching/sim_block_fixture.h"
 
 namespace roofsweep {
 namespace {
 
-struct SimBlock {
-  Block block;
-  std::vector<cv::Mat> images;  // CV_32FC3 RGB
-  std::vector<Segment3> truth, roof, extra;
-};
-
-SimBlock Simulate(uint64_t seed) {
-  sim::SimulationOptions o = sim::SimulationPreset("realistic");
-  o.seed = seed;
-  o.cameras.image_width = o.cameras.image_height = 512;
-  // 15 cm: the 512 px views cover 77 m, room for several houses under the
-  // simulator's rule that a building must lie wholly inside two views.
-  o.cameras.gsd = 0.15;
-  // A 512 px sensor behind the preset's 50 mm lens would fly at 1 km with a
-  // base/height ratio of 0.014 (heights to +-1.5 m); 3 mm gives the usual
-  // photogrammetric ~0.25 at this image size.
-  o.cameras.focal_mm = 3;
-  o.cameras.strips = 2;
-  o.cameras.images_per_strip = 3;
-  o.scene.building_count = 6;
-  NullProgress np;
-  const sim::SimulationResult r = sim::Simulate(o, np);
-  SimBlock b;
-  for (const sim::SimulatedView& v : r.views) {
-    b.block.cameras.push_back(v.camera);
-    View view;
-    view.name = v.name;
-    view.camera = static_cast<int>(b.block.cameras.size()) - 1;
-    view.pose = v.pose;
-    b.block.views.push_back(view);
-  }
-  b.block.ground.height = r.scene.ground.z;
-  b.block.max_building_height = 30;
-  for (const cv::Mat& im : r.images) {
-    cv::Mat f;
-    im.convertTo(f, CV_32FC3, 1.0 / 255);
-    b.images.push_back(f);
-  }
-  for (const sim::TrueEdge& e : r.truth.edges) {
-    b.truth.push_back({e.a, e.b});
-    (sim::IsRoofEdge(e.kind) ? b.roof : b.extra).push_back({e.a, e.b});
-  }
-  return b;
-}
-
 TEST(MatchLines, SimulatedBlockThreeSeeds) {
   for (uint64_t seed : {1, 2, 3}) {
-    const SimBlock b = Simulate(seed);
+    const SimBlock b = SimulateSmallBlock(seed);
     NullProgress np;
     const MatchResult r =
         MatchLines(b.block, b.images, MatchOptions{}, EdgeOptions{}, np, &b.truth);
@@ -110,7 +65,7 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
 }
 
 TEST(MatchLines, DegenerateInput) {
-  SimBlock b = Simulate(1);
+  SimBlock b = SimulateSmallBlock(1);
   NullProgress np;
   // Image count mismatch: a clear error.
   EXPECT_THROW(MatchLines(b.block, {b.images[0]}, {}, {}, np), Error);
