@@ -1,0 +1,77 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/city_model.h"
+#include "algorithms/geometry/block.h"
+
+namespace roofsweep {
+
+// A delineated roof plane as the sweep's grouping and delineation hand it on
+// (Baillard & Zisserman 2000, §4-§5): the plane and the plan-view patch
+// where the images support it.
+struct RoofPlaneHypothesis {
+  Eigen::Vector4d plane = Eigen::Vector4d::Zero();  // n . X + d = 0, n unit, n_z > 0
+  std::vector<Eigen::Vector2d> patch;  // convex, counter-clockwise seen from above (x, y)
+  double score = 0;                    // reliability (larger is better)
+  int lines = 0;                       // supporting 3D lines
+  double similarity = 0;               // mean Sim of its half-planes
+  std::string id;                      // for the log ("plane 12")
+};
+
+// Options of AssembleBuildings. Lengths in metres.
+struct AssemblyOptions {
+  // Planes steeper than this are walls or errors, not roofs.
+  double max_roof_slope_deg = 70.0;
+  // A roof plane must lie at least this high above the ground at its patch
+  // centre (lower planes are ground, cars, hedges).
+  double min_height_m = 2.5;
+  // Two patches belong to one building when they come within adjacency_gap_m
+  // of each other in plan view and their planes meet there (height
+  // difference below max_step_m): a lower neighbour across a party wall is a
+  // separate building.
+  double adjacency_gap_m = 1.0;
+  double max_step_m = 0.7;
+  // Roof faces of the lower envelope smaller than this, or lying mostly
+  // outside their own patch (less than min_support of their area inside
+  // the patch grown by adjacency_gap_m), are dropped and the envelope
+  // recomputed: a plane may bound the roof only where the images saw it.
+  double min_face_area_m2 = 1.0;
+  double min_support = 0.3;
+  // Buildings whose outline is smaller than this are logged and dropped.
+  double min_footprint_m2 = 15.0;
+  // Vertices closer than this are welded so that neighbouring faces share
+  // them exactly.
+  double weld_m = 1e-3;
+};
+
+// What became of each input plane and each building hypothesis.
+struct AssemblyResult {
+  CityModel model;  // local frame, crs empty
+  // One line per plane or building hypothesis that did not become (part
+  // of) a building, with the reason ("plane 7: 1.2 m above ground < 2.5 m").
+  std::vector<std::string> rejected;
+  int planes_in = 0, planes_used = 0, hypotheses = 0;
+};
+
+// Turns roof planes into closed LoD2 buildings: planes are grouped by
+// adjacency; each group's outline is the convex hull of its patches; the
+// roof is the lower envelope of the group's planes over the outline (exact
+// for the convex roof shapes: flat, shed, gable, hip, half-hip, pyramid,
+// mansard — concave roofs with valleys are not represented, a known
+// limitation); walls run from every outline edge down to the ground
+// (GroundModel at the outline, the lowest value for the whole building so
+// the ground surface is planar); the solid is closed and outward oriented
+// by construction and checked with CheckBuildingSolid. Roof type from the
+// face count and orientations. Deterministic.
+AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
+                                 const GroundModel& ground, const AssemblyOptions& options = {});
+
+// Roof type (roof_type:: code) from the roof faces: flat, monopitch,
+// gabled, hipped, pavilion (pyramid) or combination. Faces under 5 % of
+// the roof area are ignored (slivers of the envelope).
+int ClassifyRoofType(const std::vector<Polygon3>& roof_faces);
+
+}  // namespace roofsweep
