@@ -19,14 +19,20 @@ int Convert(const std::vector<std::string>& args, Context& ctx) {
               "CityGML, CityJSON, CityJSONSeq, or a GDAL vector driver (GPKG, FlatGeobuf, GeoJSON)")
       .Option("-if", &r.input_format, "FORMAT", "input format, when the extension does not tell")
       .Option("-a_srs", &r.assign_crs, "SRS", "CRS to assign to the output (no reprojection)")
+      .Option("-t_srs", &r.target_crs, "SRS",
+              "reproject the output to this CRS through PROJ (EPSG:code, WKT, PROJ string); "
+              "a 2D CRS keeps ellipsoidal heights, ballpark height steps are refused")
       .Flag("-overwrite", &r.write.overwrite, "replace an existing output file")
       .Flag("-update", &r.write.update,
             "GeoPackage: add or replace roofsweep's layers in an existing file, keep the others")
       .Flag("-allow_empty", &r.allow_empty, "write a model that has no buildings")
       .Flag("-no_check", &no_check, "do not run the solid checks (roofsweep_validity attribute)")
       .Example("roofsweep convert buildings.gml buildings.city.json")
-      .Example("roofsweep convert buildings.city.json city.gpkg -update");
+      .Example("roofsweep convert buildings.city.json city.gpkg -update")
+      .Example("roofsweep convert buildings.gml buildings_wgs84.city.json -t_srs EPSG:4979");
   if (!p.Parse(args)) return 0;
+  if (!r.assign_crs.empty() && !r.target_crs.empty())
+    throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
   r.write.check_geometry = !no_check;
   const ConvertSummary s = RunConvert(r, *ctx.progress);
   if (!ctx.quiet) {

@@ -13,6 +13,7 @@ struct ConvertRequest {
   std::string input_format;  // empty: from the extension / content
   WriteOptions write;        // format (-of), overwrite, update
   std::string assign_crs;    // -a_srs: replaces the CRS the input declares
+  std::string target_crs;    // -t_srs: reprojects from the input's CRS (excludes -a_srs)
   bool allow_empty = false;  // write a model with no buildings
 };
 

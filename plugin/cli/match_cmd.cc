@@ -17,6 +17,10 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Option("-o", &r.output, "FILE", "output with a LineStringZ layer lines3d (.gpkg, .fgb, ...)")
       .Option("-of|-f", &r.format, "FORMAT", "GDAL vector driver, when the extension does not tell")
       .Flag("-overwrite", &r.overwrite, "replace an existing output file")
+      .Option("-a_srs", &r.assign_crs, "SRS", "CRS to assign to the lines (no reprojection)")
+      .Option("-t_srs", &r.target_crs, "SRS",
+              "reproject the lines from the block CRS through PROJ (ballpark height steps "
+              "refused)")
       .Option("-truth", &r.truth, "FILE",
               "groundtruth_edges.json of `roofsweep simulate`: true-pair counts and line scores")
       .Option("-chromatic_factor", &r.match.threshold_factor, "F",
@@ -25,6 +29,8 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
   if (!p.Parse(args)) return 0;
+  if (!r.assign_crs.empty() && !r.target_crs.empty())
+    throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
   const MatchSummary s = RunMatch(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatMatchSummary(s);

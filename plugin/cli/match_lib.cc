@@ -11,6 +11,7 @@
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
+#include "io/core/crs_transform.h"
 #include "io/core/image_io.h"
 #include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
@@ -43,6 +44,21 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   const BlockManifest manifest = OpenBlockManifest(r.block);
   const Block block = ManifestToBlock(manifest);
   const LocalFrame frame = ManifestLocalFrame(manifest);
+  if (!r.assign_crs.empty() && !r.target_crs.empty())
+    throw Error("-a_srs and -t_srs exclude each other: -a_srs assigns a CRS without transforming");
+  std::optional<CrsTransform> reproject;
+  if (!r.target_crs.empty()) {
+    if (manifest.crs.empty()) throw Error(r.block + ": the block has no CRS to reproject from");
+    CrsTransformOptions o;
+    const FrameInfo info = frame.Info();
+    o.area_of_interest = Eigen::Vector4d(info.origin_lon - 0.1, info.origin_lat - 0.1,
+                                         info.origin_lon + 0.1, info.origin_lat + 0.1);
+    reproject.emplace(manifest.crs, r.target_crs, o);
+  }
+  auto output_xyz = [&](const Eigen::Vector3d& local) {
+    const Eigen::Vector3d crs = frame.ToCrs(local);
+    return reproject ? reproject->Forward(crs) : crs;
+  };
   std::vector<cv::Mat> images(block.views.size());
   tbb::parallel_for(size_t{0}, images.size(),
                     [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
@@ -75,7 +91,7 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   std::vector<LayerFeature> features;
   for (const Line3D& l : out.result.lines) {
     LayerFeature f;
-    f.lines.push_back({frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)});
+    f.lines.push_back({output_xyz(l.segment.a), output_xyz(l.segment.b)});
     f.integers["views"] = l.Views();
     f.reals["rms_px"] = l.rms_px;
     f.reals["length_m"] = l.segment.Length();
@@ -89,7 +105,9 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   }
   FeatureLayerOptions lo;
   lo.driver = r.format;
-  lo.crs = manifest.crs;
+  lo.crs = !r.target_crs.empty()   ? r.target_crs
+           : !r.assign_crs.empty() ? r.assign_crs
+                                   : manifest.crs;
   lo.overwrite = r.overwrite;
   WriteFeatureLayer(r.output, "lines3d", LayerGeometry::kLineStringZ, features, lo);
   out.write_s = Since(t0);

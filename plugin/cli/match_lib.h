@@ -15,6 +15,8 @@ struct MatchRequest {
   std::string output;  // lines3d layer file (.gpkg, .fgb, ...)
   std::string format;  // GDAL driver; empty: from the extension
   bool overwrite = false;
+  std::string assign_crs;  // -a_srs: CRS written without transforming (block CRS otherwise)
+  std::string target_crs;  // -t_srs: reproject the lines from the block CRS (excludes -a_srs)
   // Optional ground truth (groundtruth_edges.json of `roofsweep simulate`):
   // adds the true-pair counts to the funnel and scores the lines.
   std::string truth;
@@ -32,7 +34,9 @@ struct MatchSummary {
 // `roofsweep match`: reads the block and its images, extracts segments,
 // matches them and writes the 3D lines as a LineStringZ layer "lines3d" in
 // the block's CRS (fields: views, rms_px, length_m, colour_left,
-// colour_right). An empty result is written as an empty layer.
+// colour_right). An empty result is written as an empty layer. With
+// target_crs the lines are reprojected from the block CRS (checked before
+// any matching work); assign_crs only relabels them.
 MatchSummary RunMatch(const MatchRequest& request, Progress& progress);
 
 std::string FormatMatchSummary(const MatchSummary& summary);
