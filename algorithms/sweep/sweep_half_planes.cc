@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "algorithms/core/error.h"
+#include "algorithms/geometry/view.h"
 #include "algorithms/sweep/half_plane_family.h"
 #include "algorithms/sweep/points_of_interest.h"
 #include "algorithms/sweep/side_similarity.h"
@@ -50,6 +51,36 @@ std::vector<Segment2> Blockers(const std::vector<std::vector<Projected>>& projec
     out.emplace_back(o.p0, o.p1);
   }
   return out;
+}
+
+// The face's reach from the line: the points that still correlate at theta
+// (mean Cor+^2 >= options.extent_min_score over the views) are lifted onto
+// the plane through the reference view, and the options.extent_quantile of
+// their distances from the line is kept. A quantile, not the maximum, so
+// that a few points correlating by chance beyond the face do not stretch it.
+double FaceExtent(const Camera& camera, const Pose& pose, const HalfPlaneFamily& family,
+                  double theta, const SideSimilarity& sim, const std::vector<BandPoint>& points,
+                  const SweepOptions& o) {
+  std::vector<double> score;
+  sim.Evaluate(theta, &score);
+  const Eigen::Vector4d plane = family.Plane(theta);
+  const Eigen::Vector3d w = family.Direction(theta);
+  std::vector<double> reach;
+  for (size_t i = 0; i < points.size() && i < score.size(); ++i) {
+    if (score[i] < o.extent_min_score) continue;
+    const Ray ray = BackProject(camera, pose, points[i].pixel);
+    const double denom = plane.head<3>().dot(ray.direction);
+    if (std::abs(denom) < 1e-9) continue;
+    const double t = -(plane.head<3>().dot(ray.origin) + plane[3]) / denom;
+    if (t <= 0) continue;
+    const Eigen::Vector3d x = ray.origin + t * ray.direction;
+    reach.push_back(std::max(0.0, (x - family.line().a).dot(w)));
+  }
+  if (reach.empty()) return 0.0;
+  const size_t k =
+      std::min(reach.size() - 1, static_cast<size_t>(o.extent_quantile * (reach.size() - 1) + 0.5));
+  std::nth_element(reach.begin(), reach.begin() + k, reach.end());
+  return reach[k];
 }
 
 HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures,
@@ -183,6 +214,9 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   hp.curvature = (eval(theta - hc) - 2 * hp.similarity + eval(theta + hc)) / (hc * hc);
   hp.theta_deg = theta / kDeg;
   hp.plane = family->Plane(theta);
+  hp.extent_m =
+      FaceExtent(block.CameraOf(block.views[hp.reference_view]),
+                 block.views[hp.reference_view].pose, *family, theta, sim, best_points, o);
 
   if (hp.views < o.min_views) {
     hp.reason = Format("too few views (%.0f < %.0f)", hp.views, o.min_views);

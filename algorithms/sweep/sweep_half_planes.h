@@ -35,6 +35,12 @@ struct HalfPlane {
   int points = 0;           // points of interest used (after outlier removal)
   int points_detected = 0;  // points of interest in the neighbourhood
   int views = 0;            // valid views besides the reference in Sim
+  // How far the plane reaches from the line on this side (m, in the plane):
+  // a high quantile of the distances of the points of interest that still
+  // correlate at theta* (the sweep's own evidence of the face; bounded by
+  // the band width). 0 when unknown. Grouping and delineation (§4, §5) use
+  // it as the half-plane's first extent.
+  double extent_m = 0;
   bool accepted = false;
   std::string reason;  // why not accepted; empty when accepted
   // Sim at the coarse samples theta_min, theta_min + step, ... (all points

@@ -68,6 +68,11 @@ struct SweepOptions {
   // view's is dropped from Sim (occlusion, strong perspective change).
   double valid_view_ratio = 0.5;
 
+  // Face extent (HalfPlane::extent_m): the extent_quantile of the distances
+  // from the line of the points whose mean Cor+^2 at theta* is at least
+  // extent_min_score.
+  double extent_min_score = 0.25;
+  double extent_quantile = 0.9;
   // Lines steeper than this (deg from horizontal) have no horizontal side.
   double max_line_slope_deg = 80.0;
   // A view sees the line when both end points are in front and a part of

@@ -1,0 +1,186 @@
+#include "algorithms/sweep/plane_grouping.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/sweep/half_plane_family.h"
+
+namespace roofsweep {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+double Reliability(const HalfPlane& h) {
+  // Both of the paper's indicators: a high, sharp maximum.
+  return h.similarity * std::min(1.0, -h.curvature / 8.0);
+}
+
+double Distance(const Eigen::Vector4d& plane, const Eigen::Vector3d& x) {
+  return std::abs(plane.head<3>().dot(x) + plane[3]);
+}
+
+struct WeightedPoint {
+  Eigen::Vector3d x;
+  double w;
+};
+
+// Total least squares plane through weighted points; keeps `fallback` when
+// the points do not span a plane (one line, or collinear lines).
+Eigen::Vector4d FitPlane(const std::vector<WeightedPoint>& pts, const Eigen::Vector4d& fallback) {
+  double sw = 0;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& p : pts) sw += p.w, c += p.w * p.x;
+  if (sw <= 0) return fallback;
+  c /= sw;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& p : pts) cov += p.w * (p.x - c) * (p.x - c).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov / sw);
+  const Eigen::Vector3d ev = es.eigenvalues();  // ascending
+  if (!(ev[1] > 1e-4 * std::max(ev[2], 1e-12))) return fallback;
+  Eigen::Vector3d n = es.eigenvectors().col(0);
+  if (n.z() < 0) n = -n;
+  return {n.x(), n.y(), n.z(), -n.dot(c)};
+}
+
+std::string Fmt(const char* fmt, int a, int b, double c) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& h,
+                                            double min_extent_m) {
+  const auto family = HalfPlaneFamily::Make(line.segment, h.side);
+  if (!family) return {};
+  const Eigen::Vector3d w = family->Direction(h.theta_deg * kDeg);
+  const double reach = std::max(h.extent_m, min_extent_m);
+  const Eigen::Vector3d a = line.segment.a, b = line.segment.b;
+  const Eigen::Vector3d a2 = a + reach * w, b2 = b + reach * w;
+  return ConvexHull({a.head<2>(), b.head<2>(), a2.head<2>(), b2.head<2>()});
+}
+
+GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
+                               const std::vector<HalfPlane>& hps, const GroupingOptions& o) {
+  std::vector<int> order;
+  for (size_t i = 0; i < hps.size(); ++i)
+    if (hps[i].accepted && hps[i].line >= 0 && hps[i].line < static_cast<int>(lines.size()))
+      order.push_back(static_cast<int>(i));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return Reliability(hps[a]) > Reliability(hps[b]); });
+
+  struct Work {
+    PlaneGroup g;
+    std::vector<WeightedPoint> pts;
+    std::vector<Eigen::Vector2d> corners;
+    double sim_sum = 0;
+  };
+  std::vector<Work> work;
+  const double cos_max = std::cos(o.max_angle_deg * kDeg);
+  for (int i : order) {
+    const HalfPlane& h = hps[i];
+    const SweepLine& line = lines[h.line];
+    const std::vector<Eigen::Vector2d> rect = HalfPlanePatch(line, h, o.min_extent_m);
+    if (rect.size() < 3) continue;
+    const auto family = HalfPlaneFamily::Make(line.segment, h.side);
+    const Eigen::Vector3d w = family->Direction(h.theta_deg * kDeg);
+    const double reach = std::max(h.extent_m, o.min_extent_m);
+    int best = -1;
+    double best_cos = cos_max;
+    for (size_t k = 0; k < work.size(); ++k) {
+      const PlaneGroup& g = work[k].g;
+      const double c = g.plane.head<3>().dot(h.plane.head<3>());
+      if (c < best_cos) continue;
+      if (Distance(g.plane, line.segment.a) > o.max_distance_m ||
+          Distance(g.plane, line.segment.b) > o.max_distance_m)
+        continue;
+      if (ConvexDistance(g.patch, rect) > o.max_gap_m) continue;
+      best = static_cast<int>(k);
+      best_cos = c;
+    }
+    if (best < 0) {
+      work.push_back({});
+      best = static_cast<int>(work.size()) - 1;
+      work[best].g.plane = h.plane;
+    }
+    Work& wk = work[best];
+    wk.g.half_planes.push_back(i);
+    if (std::find(wk.g.lines.begin(), wk.g.lines.end(), h.line) == wk.g.lines.end())
+      wk.g.lines.push_back(h.line);
+    // The lines are measurements; the far edge of the strip only keeps the
+    // fit from degenerating when all lines are parallel and coplanar.
+    wk.pts.push_back({line.segment.a, 1.0});
+    wk.pts.push_back({line.segment.b, 1.0});
+    wk.pts.push_back({line.segment.a + reach * w, 0.25});
+    wk.pts.push_back({line.segment.b + reach * w, 0.25});
+    wk.g.plane = FitPlane(wk.pts, wk.g.plane);
+    wk.corners.insert(wk.corners.end(), rect.begin(), rect.end());
+    wk.g.patch = ConvexHull(wk.corners);
+    wk.sim_sum += h.similarity;
+    wk.g.similarity = wk.sim_sum / wk.g.half_planes.size();
+    wk.g.score += std::abs(SignedArea(rect)) * h.similarity;
+  }
+
+  // Conflict management: strongest first; a plane overlapping a stronger,
+  // kept one by too much is dropped.
+  std::vector<int> by_score(work.size());
+  std::iota(by_score.begin(), by_score.end(), 0);
+  std::stable_sort(by_score.begin(), by_score.end(),
+                   [&](int a, int b) { return work[a].g.score > work[b].g.score; });
+  GroupingResult out;
+  std::vector<int> kept;
+  for (int k : by_score) {
+    const PlaneGroup& g = work[k].g;
+    const double area = std::abs(SignedArea(g.patch));
+    int conflict = -1;
+    double overlap = 0;
+    for (int j : kept) {
+      const PlaneGroup& s = work[j].g;
+      const Ring2 inter = IntersectConvex(g.patch, s.patch);
+      if (inter.empty()) continue;
+      const double f = std::abs(SignedArea(inter)) /
+                       std::max(1e-9, std::min(area, std::abs(SignedArea(s.patch))));
+      if (f > o.max_overlap) {
+        conflict = j;
+        overlap = f;
+        break;
+      }
+    }
+    if (conflict >= 0) {
+      out.rejected.push_back(
+          Fmt("plane of line(s) %d: overlaps the stronger plane of line %d by "
+              "%.0f %% in plan view",
+              g.lines.front(), work[conflict].g.lines.front(), 100 * overlap));
+      continue;
+    }
+    kept.push_back(k);
+  }
+  std::sort(kept.begin(), kept.end());  // back to reliability order
+  for (int k : kept) out.planes.push_back(std::move(work[k].g));
+  return out;
+}
+
+std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups) {
+  std::vector<RoofPlaneHypothesis> out;
+  for (size_t k = 0; k < groups.size(); ++k) {
+    const PlaneGroup& g = groups[k];
+    RoofPlaneHypothesis h;
+    h.plane = g.plane;
+    h.patch = g.patch;
+    h.score = g.score;
+    h.lines = static_cast<int>(g.lines.size());
+    h.similarity = g.similarity;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "plane %zu (line %d)", k, g.lines.empty() ? -1 : g.lines[0]);
+    h.id = buf;
+    out.push_back(std::move(h));
+  }
+  return out;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/sweep/sweep_half_planes.h"
+
+namespace roofsweep {
+
+// Options of the grouping of half-planes into planes (Baillard & Zisserman
+// 2000, §4). Lengths in metres.
+struct GroupingOptions {
+  // A half-plane joins a plane when its normal is within max_angle_deg of
+  // the plane's, both end points of its line lie within max_distance_m of
+  // the plane, and its patch comes within max_gap_m of the plane's patch in
+  // plan view (coplanar faces of different buildings stay apart).
+  double max_angle_deg = 5.0;
+  double max_distance_m = 0.25;
+  double max_gap_m = 1.0;
+  // A half-plane's patch is the strip from its line to the sweep's reach
+  // (HalfPlane::extent_m), at least min_extent_m wide.
+  double min_extent_m = 1.0;
+  // Conflict management (§5.2): two planes whose plan-view patches overlap
+  // by more than max_overlap of the smaller patch and that are not coplanar
+  // cannot both be roof; the one with the lower score (patch area x
+  // similarity) is dropped.
+  double max_overlap = 0.5;
+};
+
+// A plane with the half-planes and lines that support it.
+struct PlaneGroup {
+  Eigen::Vector4d plane = Eigen::Vector4d::Zero();  // n . X + d = 0, unit n, n_z >= 0
+  std::vector<int> half_planes;                     // indices into the sweep's result
+  std::vector<int> lines;                           // distinct input lines
+  std::vector<Eigen::Vector2d> patch;               // plan view, convex, counter-clockwise
+  double score = 0;                                 // sum of patch area x similarity
+  double similarity = 0;                            // mean Sim of the half-planes
+};
+
+struct GroupingResult {
+  std::vector<PlaneGroup> planes;
+  std::vector<std::string> rejected;  // planes dropped by conflict management, with why
+};
+
+// Groups the accepted half-planes, most reliable first (Sim x curvature),
+// into planes: a half-plane joins the first compatible plane (see
+// GroupingOptions), whose parameters are then refitted by orthogonal
+// regression over its lines' end points and the far edges of their
+// strips; otherwise it starts a new plane. Then conflicting planes are
+// resolved. Deterministic.
+GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
+                               const std::vector<HalfPlane>& half_planes,
+                               const GroupingOptions& options = {});
+
+// The groups as the building assembly takes them.
+std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups);
+
+// Plan-view patch of one half-plane: the strip from the line to its reach.
+std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& half_plane,
+                                            double min_extent_m);
+
+}  // namespace roofsweep

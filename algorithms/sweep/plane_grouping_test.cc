@@ -1,0 +1,99 @@
+#include "algorithms/sweep/plane_grouping.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/sweep/half_plane_family.h"
+
+namespace roofsweep {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// The accepted half-plane on `side` of `line` that contains the plane with
+// unit normal `n` (as the sweep would report it).
+HalfPlane Accepted(const std::vector<SweepLine>& lines, int line, int side,
+                   const Eigen::Vector3d& n, double extent, double sim = 0.6) {
+  const auto f = HalfPlaneFamily::Make(lines[line].segment, side);
+  HalfPlane h;
+  h.line = line;
+  h.side = side;
+  h.theta_deg = f->AngleOfNormal(n) / kDeg;
+  h.plane = f->Plane(h.theta_deg * kDeg);
+  h.similarity = sim;
+  h.curvature = -10;
+  h.extent_m = extent;
+  h.accepted = true;
+  return h;
+}
+
+// Gable 10 x 8 m, ridge along x at y = 4, z = 8, eaves at z = 6.
+struct Gable {
+  std::vector<SweepLine> lines = {{{{0, 4, 8}, {10, 4, 8}}, {}},   // ridge
+                                  {{{0, 0, 6}, {10, 0, 6}}, {}},   // south eave
+                                  {{{0, 8, 6}, {10, 8, 6}}, {}}};  // north eave
+  Eigen::Vector3d south = Eigen::Vector3d(0, -2, 4).normalized();
+  Eigen::Vector3d north = Eigen::Vector3d(0, 2, 4).normalized();
+};
+
+TEST(PlaneGrouping, RidgeAndEavesBecomeTwoPlanes) {
+  Gable g;
+  // Side +1 is left of a -> b seen from above: +y for lines along +x.
+  std::vector<HalfPlane> hps = {
+      Accepted(g.lines, 0, -1, g.south, 3.0), Accepted(g.lines, 0, +1, g.north, 3.5),
+      Accepted(g.lines, 1, +1, g.south, 3.0), Accepted(g.lines, 2, -1, g.north, 2.0)};
+  HalfPlane rejected = hps[0];
+  rejected.accepted = false;
+  rejected.line = 1;
+  hps.push_back(rejected);
+  const GroupingResult r = GroupHalfPlanes(g.lines, hps);
+  ASSERT_EQ(r.planes.size(), 2u);
+  for (const PlaneGroup& p : r.planes) {
+    EXPECT_EQ(p.lines.size(), 2u);
+    const Eigen::Vector3d n = p.plane.head<3>();
+    EXPECT_GT(std::max(n.dot(g.south), n.dot(g.north)), std::cos(0.01 * kDeg));
+    // The two strips cover the 10 x 4 m face.
+    EXPECT_NEAR(std::abs(SignedArea(p.patch)), 40.0, 1e-6);
+  }
+  EXPECT_TRUE(r.rejected.empty());
+  const std::vector<RoofPlaneHypothesis> roofs = ToRoofPlanes(r.planes);
+  ASSERT_EQ(roofs.size(), 2u);
+  EXPECT_EQ(roofs[0].lines, 2);
+}
+
+TEST(PlaneGrouping, FarApartCoplanarFacesStaySeparateAndConflictsResolve) {
+  Gable g;
+  std::vector<SweepLine> lines = g.lines;
+  // The same south face 30 m further east: coplanar but another building.
+  lines.push_back({{{40, 4, 8}, {50, 4, 8}}, {}});
+  // A false, steep half-plane on the south eave's inner side overlapping
+  // the south face, weaker than it.
+  std::vector<HalfPlane> hps = {
+      Accepted(lines, 0, -1, g.south, 4.0), Accepted(lines, 3, -1, g.south, 4.0),
+      Accepted(lines, 1, +1, Eigen::Vector3d(0, -1, 1).normalized(), 3.5, 0.45)};
+  const GroupingResult r = GroupHalfPlanes(lines, hps);
+  ASSERT_EQ(r.planes.size(), 2u);
+  EXPECT_EQ(r.planes[0].lines, std::vector<int>{0});
+  EXPECT_EQ(r.planes[1].lines, std::vector<int>{3});
+  ASSERT_EQ(r.rejected.size(), 1u);
+  EXPECT_NE(r.rejected[0].find("overlaps"), std::string::npos);
+}
+
+TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
+  Gable g;
+  const std::vector<HalfPlane> hps = {
+      Accepted(g.lines, 0, -1, g.south, 4.0), Accepted(g.lines, 0, +1, g.north, 4.0),
+      Accepted(g.lines, 1, +1, g.south, 2.0), Accepted(g.lines, 2, -1, g.north, 2.0)};
+  GroundModel ground;
+  ground.height = 0.0;
+  const AssemblyResult r =
+      AssembleBuildings(ToRoofPlanes(GroupHalfPlanes(g.lines, hps).planes), ground);
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  EXPECT_NEAR(r.model.buildings[0].measured_height, 8.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace roofsweep

@@ -1,0 +1,90 @@
+#include <iostream>
+
+#include "plugin/cli/arg_parser.h"
+#include "plugin/cli/command.h"
+#include "plugin/cli/run_lib.h"
+
+namespace roofsweep::cli {
+namespace {
+
+// Options shared by `run` and `sweep`, with the papers' defaults.
+void AddProcessingOptions(ArgParser& p, RunRequest& r) {
+  p.Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
+      .Option("-chromatic_factor", &r.match.threshold_factor, "F",
+              "chromatic thresholds = F x median statistic (default 8)")
+      .Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
+      .Option("-theta_max", &r.sweep.theta_max_deg, "DEG", "swept angle range end (default 75)")
+      .Option("-min_similarity", &r.sweep.min_similarity, "S",
+              "accept a half-plane when Sim >= S (default 0.4)")
+      .Option("-min_curvature", &r.sweep.min_curvature, "C",
+              "... and |Sim''| >= C per rad^2 (default 4.0)")
+      .Option("-band_width", &r.sweep.band_width_px, "PX",
+              "neighbourhood of a line side in the reference view (default 100)");
+}
+
+int Run(const std::vector<std::string>& args, Context& ctx) {
+  RunRequest r;
+  ArgParser p("run",
+              "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
+              "half-plane sweep, grouping into roof planes, conflict management and closed "
+              "solids with walls down to the ground (Scholze et al. 2000; Baillard & Zisserman "
+              "2000). Prints a table of counts and times per stage.");
+  p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
+      .Option("-o", &r.output, "FILE", "LoD2 output (.gml, .city.json, .city.jsonl, .gpkg, ...)")
+      .Option("-of|-f", &r.format, "FORMAT", "CityGML, CityJSON, CityJSONSeq or a GDAL driver")
+      .Flag("-overwrite", &r.overwrite, "replace existing output files")
+      .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
+      .Option("-half_planes", &r.half_planes, "FILE",
+              "also write the half-planes (layer half_planes)")
+      .Option("-report", &r.report, "FILE",
+              "JSON report: the stage table and why each rejected plane or building was not built")
+      .Option("-min_height", &r.assembly.min_height_m, "M",
+              "lowest roof plane above the ground (default 2.5)")
+      .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",
+              "steepest roof plane (default 70)");
+  AddProcessingOptions(p, r);
+  p.Example("roofsweep run sim/block.json -o buildings.gml")
+      .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite");
+  if (!p.Parse(args)) return 0;
+  const RunSummary s = RunPipeline(r, *ctx.progress);
+  if (!ctx.quiet) {
+    std::cout << FormatRunSummary(s);
+    std::cout << "Wrote " << r.output << ": " << s.buildings << " buildings\n";
+  } else {
+    for (const std::string& m : s.messages) std::cerr << m << "\n";
+  }
+  return 0;
+}
+
+int Sweep(const std::vector<std::string>& args, Context& ctx) {
+  RunRequest r;
+  r.stop_after_sweep = true;
+  ArgParser p("sweep",
+              "Runs the pipeline up to the half-plane sweep (Baillard & Zisserman 2000, section 3) "
+              "and writes every swept line side as a polygon on its best plane, with the angle, "
+              "similarity, curvature and why it was not accepted, for inspection.");
+  p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
+      .Option("-o", &r.output, "FILE", "output with a MultiPolygonZ layer half_planes (.gpkg, ...)")
+      .Option("-of|-f", &r.format, "FORMAT", "GDAL vector driver, when the extension does not tell")
+      .Flag("-overwrite", &r.overwrite, "replace existing output files")
+      .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
+      .Option("-report", &r.report, "FILE", "JSON report with the stage table");
+  AddProcessingOptions(p, r);
+  p.Example("roofsweep sweep out/block -o half_planes.gpkg");
+  if (!p.Parse(args)) return 0;
+  const RunSummary s = RunPipeline(r, *ctx.progress);
+  if (!ctx.quiet) {
+    std::cout << FormatRunSummary(s);
+    std::cout << "Wrote " << r.output << ": " << s.sides << " half-planes, " << s.accepted
+              << " accepted\n";
+  }
+  return 0;
+}
+
+const CommandRegistration kRun{
+    {"run", "reconstruct LoD2 buildings from an oriented block (the whole pipeline)", Run}};
+const CommandRegistration kSweep{
+    {"sweep", "sweep half-planes about the 3D lines and write them for inspection", Sweep}};
+
+}  // namespace
+}  // namespace roofsweep::cli

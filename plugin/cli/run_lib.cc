@@ -1,0 +1,234 @@
+#include "plugin/cli/run_lib.h"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cstdarg>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "algorithms/core/error.h"
+#include "algorithms/matching/match_lines.h"
+#include "algorithms/sweep/sweep_half_planes.h"
+#include "io/citymodel/citymodel_io.h"
+#include "io/citymodel/ogr_citymodel.h"
+#include "io/core/block_manifest.h"
+#include "io/core/image_io.h"
+#include "io/core/local_frame.h"
+#include "io/orientation/block_source.h"
+
+namespace roofsweep {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string Str(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string Str(const char* fmt, ...) {
+  char buf[300];
+  va_list ap;
+  va_start(ap, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  return buf;
+}
+
+void RefuseExisting(const std::string& path, bool overwrite) {
+  if (!path.empty() && !overwrite && std::filesystem::exists(path))
+    throw Error(path + ": output exists (use -overwrite to replace it)");
+}
+
+// The reason of a rejection without its numbers, to count them by kind.
+std::string ReasonKind(const std::string& r) {
+  const size_t colon = r.find(": ");
+  std::string s = colon == std::string::npos ? r : r.substr(colon + 2);
+  std::string out;
+  for (char c : s) {
+    if ((c >= '0' && c <= '9') || c == '.' || c == '-') {
+      if (out.empty() || out.back() != '#') out += '#';
+    } else {
+      out += c;
+    }
+  }
+  const size_t paren = out.find(" (");
+  return paren == std::string::npos ? out : out.substr(0, paren);
+}
+
+void WriteReport(const std::string& path, const RunSummary& s) {
+  nlohmann::json j;
+  for (const RunStage& st : s.stages)
+    j["stages"].push_back({{"stage", st.name}, {"result", st.result}, {"seconds", st.seconds}});
+  j["rejected"] = s.rejected;
+  j["messages"] = s.messages;
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream f(tmp);
+    f << j.dump(2) << "\n";
+    if (!f) throw Error(path + ": cannot write the report");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
+  if (r.output.empty())
+    throw Error(std::string(r.stop_after_sweep ? "sweep" : "run") + ": no output file given (-o)");
+  for (const std::string& p : {r.output, r.lines3d, r.half_planes, r.report})
+    RefuseExisting(p, r.overwrite);
+  if (!r.stop_after_sweep) ResolveCityModelFormat(r.output, r.format);  // fail early
+  RunSummary out;
+
+  auto t0 = Clock::now();
+  const BlockManifest manifest = OpenBlockManifest(r.block);
+  const Block block = ManifestToBlock(manifest);
+  const LocalFrame frame = ManifestLocalFrame(manifest);
+  if (!block.ground.Known() && !r.stop_after_sweep)
+    throw Error(r.block + ": the block has no ground height or DTM; walls need one");
+  std::vector<cv::Mat> images(block.views.size());
+  tbb::parallel_for(size_t{0}, images.size(),
+                    [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
+  out.stages.push_back({"read", Str("%zu images", images.size()), Since(t0)});
+
+  // Lines and matching: 0 .. 35 %; sweep: 35 .. 95 %.
+  t0 = Clock::now();
+  SubProgress match_progress(progress, 0.0, 0.35);
+  const MatchResult matched = MatchLines(block, images, r.match, r.edges, match_progress, nullptr);
+  out.messages = matched.messages;
+  out.lines = static_cast<int>(matched.lines.size());
+  out.stages.push_back({"segments + 3D lines",
+                        Str("%lld segments, %d 3D lines", matched.funnel.segments, out.lines),
+                        Since(t0)});
+  if (!r.lines3d.empty()) {
+    std::vector<LayerFeature> features;
+    for (const Line3D& l : matched.lines) {
+      LayerFeature f;
+      f.lines.push_back({frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)});
+      f.integers["views"] = l.Views();
+      f.reals["rms_px"] = l.rms_px;
+      f.reals["length_m"] = l.segment.Length();
+      features.push_back(std::move(f));
+    }
+    FeatureLayerOptions lo;
+    lo.crs = manifest.crs;
+    lo.overwrite = r.overwrite;
+    WriteFeatureLayer(r.lines3d, "lines3d", LayerGeometry::kLineStringZ, features, lo);
+  }
+
+  t0 = Clock::now();
+  std::vector<SweepLine> lines;
+  for (const Line3D& l : matched.lines) {
+    SweepLine s{l.segment, {}};
+    for (const auto& [v, seg] : l.observations) s.views.push_back(v);
+    lines.push_back(std::move(s));
+  }
+  SubProgress sweep_progress(progress, 0.35, 0.95);
+  const std::vector<HalfPlane> hps = SweepHalfPlanes(block, images, lines, r.sweep, sweep_progress);
+  out.sides = static_cast<int>(hps.size());
+  for (const HalfPlane& h : hps) out.accepted += h.accepted;
+  out.stages.push_back(
+      {"half-plane sweep", Str("%d sides, %d accepted", out.sides, out.accepted), Since(t0)});
+
+  const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
+  if (!half_plane_path.empty()) {
+    t0 = Clock::now();
+    std::vector<LayerFeature> features;
+    for (const HalfPlane& h : hps) {
+      if (h.reference_view < 0) continue;
+      LayerFeature f;
+      // The strip the sweep saw, lifted onto its best plane.
+      Polygon3 strip;
+      for (const Eigen::Vector2d& p : HalfPlanePatch(lines[h.line], h, 0.5)) {
+        const double z = -(h.plane[0] * p.x() + h.plane[1] * p.y() + h.plane[3]) / h.plane[2];
+        strip.exterior.push_back(frame.ToCrs({p.x(), p.y(), std::isfinite(z) ? z : 0.0}));
+      }
+      if (strip.exterior.size() < 3) continue;
+      f.polygons.push_back(std::move(strip));
+      f.integers["line"] = h.line;
+      f.integers["side"] = h.side;
+      f.integers["accepted"] = h.accepted;
+      f.integers["points"] = h.points;
+      f.integers["views"] = h.views;
+      f.reals["theta_deg"] = h.theta_deg;
+      f.reals["slope_deg"] = std::acos(std::clamp(h.plane[2], -1.0, 1.0)) * 180 / M_PI;
+      f.reals["similarity"] = h.similarity;
+      f.reals["curvature"] = h.curvature;
+      f.reals["extent_m"] = h.extent_m;
+      f.strings["reason"] = h.reason;
+      f.strings["reference_view"] = block.views[h.reference_view].name;
+      features.push_back(std::move(f));
+    }
+    FeatureLayerOptions lo;
+    lo.driver = r.stop_after_sweep ? r.format : "";
+    lo.crs = manifest.crs;
+    lo.overwrite = r.overwrite;
+    lo.description = "roofsweep half-planes (Baillard & Zisserman 2000, section 3)";
+    WriteFeatureLayer(half_plane_path, "half_planes", LayerGeometry::kMultiPolygonZ, features, lo);
+    if (r.stop_after_sweep)
+      out.stages.push_back({"write", Str("%zu half-planes", features.size()), Since(t0)});
+  }
+  if (r.stop_after_sweep) {
+    if (!r.report.empty()) WriteReport(r.report, out);
+    progress.Update(1.0, "done");
+    return out;
+  }
+
+  t0 = Clock::now();
+  const GroupingResult grouped = GroupHalfPlanes(lines, hps, r.grouping);
+  out.planes = static_cast<int>(grouped.planes.size());
+  out.rejected = grouped.rejected;
+  out.stages.push_back(
+      {"grouping into planes",
+       Str("%d planes, %zu dropped in conflicts", out.planes, grouped.rejected.size()), Since(t0)});
+
+  t0 = Clock::now();
+  AssemblyResult assembled =
+      AssembleBuildings(ToRoofPlanes(grouped.planes), block.ground, r.assembly);
+  out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
+  out.buildings = static_cast<int>(assembled.model.buildings.size());
+  out.stages.push_back({"LoD2 buildings",
+                        Str("%d of %d hypotheses, %d planes used", out.buildings,
+                            assembled.hypotheses, assembled.planes_used),
+                        Since(t0)});
+
+  t0 = Clock::now();
+  CityModel model = std::move(assembled.model);
+  model.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
+  model.crs = manifest.crs;
+  WriteOptions wo;
+  wo.format = r.format;
+  wo.overwrite = r.overwrite;
+  WriteCityModel(model, r.output, wo);
+  out.stages.push_back({"write", Str("%d buildings", out.buildings), Since(t0)});
+  if (!r.report.empty()) WriteReport(r.report, out);
+  progress.Update(1.0, "done");
+  return out;
+}
+
+std::string FormatRunSummary(const RunSummary& s) {
+  std::ostringstream o;
+  for (const std::string& m : s.messages) o << m << "\n";
+  o << Str("%-22s %-44s %9s\n", "stage", "result", "time (s)");
+  double total = 0;
+  for (const RunStage& st : s.stages) {
+    o << Str("%-22s %-44s %9.2f\n", st.name.c_str(), st.result.c_str(), st.seconds);
+    total += st.seconds;
+  }
+  o << Str("%-22s %-44s %9.2f\n", "total", "", total);
+  if (!s.rejected.empty()) {
+    std::map<std::string, int> kinds;
+    for (const std::string& r : s.rejected) ++kinds[ReasonKind(r)];
+    o << "Not built (" << s.rejected.size() << "; -report FILE lists each):\n";
+    for (const auto& [k, n] : kinds) o << Str("  %5d  %s\n", n, k.c_str());
+  }
+  return o.str();
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/core/progress.h"
+#include "algorithms/edges/edge_options.h"
+#include "algorithms/matching/match_options.h"
+#include "algorithms/sweep/plane_grouping.h"
+#include "algorithms/sweep/sweep_options.h"
+
+namespace roofsweep {
+
+struct RunRequest {
+  std::string block;   // anything OpenBlockManifest accepts
+  std::string output;  // LoD2 model (.gml, .city.json, .gpkg, ...); for `sweep` the half-planes
+  std::string format;  // empty: from the extension
+  bool overwrite = false;
+  bool stop_after_sweep = false;  // `roofsweep sweep`: write the half-planes, no buildings
+  std::string lines3d;            // optional: also write the 3D lines (OGR layer lines3d)
+  std::string half_planes;        // optional: also write the half-planes (OGR layer half_planes)
+  std::string report;             // optional: JSON with the stage table and every rejection
+  EdgeOptions edges;
+  MatchOptions match;
+  SweepOptions sweep;
+  GroupingOptions grouping;
+  AssemblyOptions assembly;
+};
+
+struct RunStage {
+  std::string name;
+  std::string result;  // "412 3D lines"
+  double seconds = 0;
+};
+
+struct RunSummary {
+  std::vector<RunStage> stages;
+  int lines = 0, sides = 0, accepted = 0, planes = 0, buildings = 0;
+  // Every plane or building hypothesis that did not become (part of) a
+  // building, with the reason.
+  std::vector<std::string> rejected;
+  std::vector<std::string> messages;  // warnings of the stages
+};
+
+// `roofsweep run` / `roofsweep sweep`: the whole pipeline on a block —
+// images, colour segments, 3D lines (Scholze et al. 2000), half-plane sweep
+// (Baillard & Zisserman 2000 §3), grouping into planes (§4), conflict
+// management, LoD2 buildings with walls to the ground — written in the
+// block's CRS. Checks that the outputs may be written before the work
+// starts; every output is written atomically.
+RunSummary RunPipeline(const RunRequest& request, Progress& progress);
+
+// The stage table and the rejection counts by reason.
+std::string FormatRunSummary(const RunSummary& summary);
+
+}  // namespace roofsweep
