@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 
 #include "algorithms/core/error.h"
@@ -53,6 +54,41 @@ std::string SniffFormat(const std::string& path) {
   return "OGR";
 }
 
+// -co for roofsweep's own writers; -dsco/-lco belong to OGR formats.
+CityModelWriteOptions ApplyCreationOptions(const std::string& path, const std::string& format,
+                                           bool ogr, const WriteOptions& options) {
+  CityModelWriteOptions o = options;
+  if (ogr) {
+    if (!options.creation_options.empty())
+      throw Error(AtLine(path, 0,
+                         "creation options (-co) apply to CityGML/CityJSON outputs; for " + format +
+                             " use dataset (-dsco) or layer (-lco) creation options"));
+    return o;
+  }
+  if (!options.dataset_options.empty() || !options.layer_options.empty())
+    throw Error(AtLine(path, 0,
+                       "dataset/layer creation options (-dsco/-lco) apply to GDAL formats, not " +
+                           format + " (roofsweep's own writers take -co)"));
+  for (const std::string& c : options.creation_options) {
+    const auto eq = c.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw Error(AtLine(path, 0, "creation option '" + c + "' is not NAME=VALUE"));
+    const std::string name = Lower(c.substr(0, eq)), value = c.substr(eq + 1);
+    if (name != "decimals" || format != "CityGML")
+      throw Error(AtLine(
+          path, 0,
+          format + " has no creation option '" + c.substr(0, eq) + "' (" +
+              (format == "CityGML" ? "known: DECIMALS" : "its precision is the transform's scale") +
+              ")"));
+    char* end = nullptr;
+    const long d = std::strtol(value.c_str(), &end, 10);
+    if (value.empty() || *end != '\0' || d < 0 || d > 17)
+      throw Error(AtLine(path, 0, "creation option DECIMALS expects 0 to 17, got '" + value + "'"));
+    o.decimals = static_cast<int>(d);
+  }
+  return o;
+}
+
 }  // namespace
 
 std::string ResolveCityModelFormat(const std::string& path, const std::string& format) {
@@ -88,10 +124,11 @@ std::unique_ptr<CityModelStreamWriter> OpenCityModelWriter(const std::string& pa
   const bool ogr = f != "CityGML" && f != "CityJSON" && f != "CityJSONSeq";
   if (options.update && !ogr)
     throw Error(AtLine(path, 0, "update applies to GeoPackage outputs only; use overwrite"));
-  if (f == "CityGML") return std::make_unique<CityGmlWriter>(path, options);
-  if (f == "CityJSON") return std::make_unique<CityJsonWriter>(path, options);
-  if (f == "CityJSONSeq") return std::make_unique<CityJsonSeqWriter>(path, options);
-  return std::make_unique<OgrCityModelWriter>(path, f, options);
+  const CityModelWriteOptions o = ApplyCreationOptions(path, f, ogr, options);
+  if (f == "CityGML") return std::make_unique<CityGmlWriter>(path, o);
+  if (f == "CityJSON") return std::make_unique<CityJsonWriter>(path, o);
+  if (f == "CityJSONSeq") return std::make_unique<CityJsonSeqWriter>(path, o);
+  return std::make_unique<OgrCityModelWriter>(path, f, o);
 }
 
 void WriteCityModel(const CityModel& model, const std::string& path, const WriteOptions& options,

@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "algorithms/buildings/city_model.h"
 #include "io/citymodel/citymodel_writer.h"
@@ -20,6 +21,12 @@ class Progress;
 
 struct WriteOptions : CityModelWriteOptions {
   std::string format;  // empty: from the output's extension
+  // roofsweep's own writers: "NAME=VALUE" creation options (-co). CityGML
+  // knows DECIMALS=N (0-17, CityModelWriteOptions::decimals); CityJSON and
+  // CityJSONSeq have none (their precision is the transform's scale: 1 mm,
+  // 1e-8 degrees). Refused for OGR formats, which take
+  // dataset_options/layer_options instead.
+  std::vector<std::string> creation_options;
 };
 
 // The canonical format name for `format` (or, when empty, for `path`'s

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "algorithms/buildings/city_model.h"
 #include "algorithms/buildings/solid_check.h"
@@ -26,6 +27,14 @@ struct CityModelWriteOptions {
   // Decimals for written coordinates; -1 chooses 4 (0.1 mm) for projected or
   // local metres and 9 for geographic degrees.
   int decimals = -1;
+  // OGR formats only (GPKG, FlatGeobuf, ...): GDAL dataset and layer
+  // creation options as "NAME=VALUE" (ogr2ogr's -dsco and -lco), checked
+  // against the driver's lists: an unknown name or a bad value is an error.
+  // Layer options apply to every layer and override roofsweep's own
+  // (GPKG: SPATIAL_INDEX=YES, GEOMETRY_NAME=geom). The CityGML and CityJSON
+  // writers refuse them.
+  std::vector<std::string> dataset_options;
+  std::vector<std::string> layer_options;
 };
 
 // Name of the validity attribute the writers add.

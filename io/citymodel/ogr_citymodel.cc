@@ -1,6 +1,7 @@
 #include "io/citymodel/ogr_citymodel.h"
 
 #include <cpl_error.h>
+#include <cpl_minixml.h>
 #include <gdal_priv.h>
 #include <ogr_geometry.h>
 #include <ogr_spatialref.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 
@@ -173,12 +175,89 @@ GDALDriver* WriteDriver(const std::string& name, const std::string& path) {
   return drv;
 }
 
+std::string Upper(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+  return s;
+}
+
+// Why not GDALValidateCreationOptions: it warns instead of failing, and its
+// layer-option sibling GDALValidateOptions is not exported by libgdal. This
+// checks names and the value types GDAL's option lists declare.
+void CheckOptionsAgainstList(const std::string& path, const std::string& driver,
+                             const char* list_xml, const std::vector<std::string>& options,
+                             const std::string& kind) {
+  if (options.empty()) return;
+  CPLXMLNode* root = list_xml ? CPLParseXMLString(list_xml) : nullptr;
+  struct Free {
+    CPLXMLNode* n;
+    ~Free() {
+      if (n) CPLDestroyXMLNode(n);
+    }
+  } free_root{root};
+  const CPLXMLNode* list = root;
+  while (list && list->eType != CXT_Element) list = list->psNext;
+  for (const std::string& o : options) {
+    const auto eq = o.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw Error(AtLine(path, 0, kind + " '" + o + "' is not NAME=VALUE"));
+    const std::string name = o.substr(0, eq), value = o.substr(eq + 1);
+    const CPLXMLNode* found = nullptr;
+    std::string known;
+    for (const CPLXMLNode* c = list ? list->psChild : nullptr; c && !found; c = c->psNext) {
+      if (c->eType != CXT_Element || !EQUAL(c->pszValue, "Option")) continue;
+      const char* n = CPLGetXMLValue(c, "name", "");
+      const char* alias = CPLGetXMLValue(c, "alias", "");
+      if (EQUAL(n, name.c_str()) || (*alias && EQUAL(alias, name.c_str()))) found = c;
+      known += (known.empty() ? "" : ", ") + std::string(n);
+    }
+    if (!found)
+      throw Error(AtLine(
+          path, 0,
+          "format " + driver + " has no " + kind + " '" + name + "'" +
+              (known.empty() ? std::string(" (it takes none)") : " (known: " + known + ")")));
+    const std::string type = Upper(CPLGetXMLValue(found, "type", ""));
+    const std::string v = Upper(value);
+    bool ok = true;
+    std::string expected;
+    if (type == "BOOLEAN") {
+      ok = v == "YES" || v == "NO" || v == "ON" || v == "OFF" || v == "TRUE" || v == "FALSE" ||
+           v == "1" || v == "0";
+      expected = "YES or NO";
+    } else if (type == "INT" || type == "INTEGER") {
+      char* end = nullptr;
+      std::strtol(value.c_str(), &end, 10);
+      ok = !value.empty() && *end == '\0';
+      expected = "a whole number";
+    } else if (type == "FLOAT") {
+      char* end = nullptr;
+      std::strtod(value.c_str(), &end);
+      ok = !value.empty() && *end == '\0';
+      expected = "a number";
+    } else if (type == "STRING-SELECT") {
+      ok = false;
+      for (const CPLXMLNode* c = found->psChild; c; c = c->psNext) {
+        if (c->eType != CXT_Element || !EQUAL(c->pszValue, "Value")) continue;
+        const char* text = CPLGetXMLValue(c, nullptr, "");
+        const char* alias = CPLGetXMLValue(c, "alias", "");
+        if (EQUAL(text, value.c_str()) || (*alias && EQUAL(alias, value.c_str()))) ok = true;
+        expected += (expected.empty() ? "" : ", ") + std::string(text);
+      }
+      expected = "one of " + expected;
+    }
+    if (!ok)
+      throw Error(AtLine(path, 0,
+                         "format " + driver + ": " + kind + " " + name + " expects " + expected +
+                             ", got '" + value + "'"));
+  }
+}
+
 bool IsMultiLayer(const std::string& driver) {
   return EQUAL(driver.c_str(), "GPKG") || EQUAL(driver.c_str(), "SQLite");
 }
 
 // Opens the temporary copy for update, or creates a new dataset there.
-GDALDataset* OpenOutput(GDALDriver* drv, const OutputFile& file, bool update) {
+GDALDataset* OpenOutput(GDALDriver* drv, const OutputFile& file, bool update,
+                        const std::vector<std::string>& dataset_options) {
   QuietGdal quiet;
   std::error_code ec;
   if (update && fs::exists(file.path(), ec)) {
@@ -193,13 +272,17 @@ GDALDataset* OpenOutput(GDALDriver* drv, const OutputFile& file, bool update) {
           std::string("cannot open for update as ") + drv->GetDescription() + QuietGdal::Last()));
     return ds;
   }
-  GDALDataset* ds = drv->Create(file.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+  char** dsco = nullptr;
+  for (const std::string& o : dataset_options) dsco = CSLAddString(dsco, o.c_str());
+  GDALDataset* ds = drv->Create(file.temp_path().c_str(), 0, 0, 0, GDT_Unknown, dsco);
+  CSLDestroy(dsco);
   if (!ds) throw Error(AtLine(file.path(), 0, "cannot create" + QuietGdal::Last()));
   return ds;
 }
 
 OGRLayer* CreateLayer(GDALDataset* ds, const std::string& name, OGRwkbGeometryType type,
-                      OGRSpatialReference* srs, const std::string& path) {
+                      OGRSpatialReference* srs, const std::string& path,
+                      const std::vector<std::string>& layer_options) {
   QuietGdal quiet;
   for (int i = 0; i < ds->GetLayerCount(); ++i)
     if (EQUAL(ds->GetLayer(i)->GetName(), name.c_str())) {
@@ -211,6 +294,10 @@ OGRLayer* CreateLayer(GDALDataset* ds, const std::string& name, OGRwkbGeometryTy
   if (EQUAL(ds->GetDriver()->GetDescription(), "GPKG")) {
     lco = CSLSetNameValue(lco, "SPATIAL_INDEX", "YES");
     lco = CSLSetNameValue(lco, "GEOMETRY_NAME", "geom");
+  }
+  for (const std::string& o : layer_options) {
+    const auto eq = o.find('=');
+    lco = CSLSetNameValue(lco, o.substr(0, eq).c_str(), o.substr(eq + 1).c_str());
   }
   OGRLayer* layer = ds->CreateLayer(name.c_str(), srs, type, lco);
   CSLDestroy(lco);
@@ -252,6 +339,15 @@ bool IsOgrVectorWriteDriver(const std::string& name) {
   return drv && drv->GetMetadataItem(GDAL_DCAP_VECTOR) && drv->GetMetadataItem(GDAL_DCAP_CREATE);
 }
 
+void CheckOgrCreationOptions(const std::string& path, const std::string& driver,
+                             const std::vector<std::string>& options, bool layer) {
+  GDALDriver* drv = WriteDriver(driver, path);
+  CheckOptionsAgainstList(
+      path, drv->GetDescription(),
+      drv->GetMetadataItem(layer ? GDAL_DS_LAYER_CREATIONOPTIONLIST : GDAL_DMD_CREATIONOPTIONLIST),
+      options, layer ? "layer creation option" : "dataset creation option");
+}
+
 OgrCityModelWriter::OgrCityModelWriter(const std::string& path, const std::string& driver,
                                        const CityModelWriteOptions& options)
     : driver_name_(driver), options_(options), file_(path, options.overwrite || options.update) {
@@ -259,6 +355,10 @@ OgrCityModelWriter::OgrCityModelWriter(const std::string& path, const std::strin
   multi_layer_ = IsMultiLayer(driver);
   if (options.update && !multi_layer_)
     throw Error(AtLine(path, 0, "update is only supported for GPKG/SQLite, not " + driver));
+  if (options.update && !options.dataset_options.empty())
+    throw Error(AtLine(path, 0, "dataset creation options do not apply when updating a file"));
+  CheckOgrCreationOptions(path, driver, options.dataset_options, false);
+  CheckOgrCreationOptions(path, driver, options.layer_options, true);
 }
 
 OgrCityModelWriter::~OgrCityModelWriter() {
@@ -283,11 +383,12 @@ void OgrCityModelWriter::Begin(const std::string& crs, const Envelope3&) {
   GDALDriver* drv = WriteDriver(driver_name_, file_.path());
   // GeoJSON can only name a CRS by its code, which a promoted 3D CRS lacks.
   srs_ = Make3dSrs(crs, file_.path(), !EQUAL(driver_name_.c_str(), "GeoJSON"));
-  ds_ = OpenOutput(drv, file_, options_.update);
+  ds_ = OpenOutput(drv, file_, options_.update, options_.dataset_options);
   QuietGdal quiet;
   auto make = [&](const std::string& name, bool building_fields, bool surface_fields) {
     auto l = std::make_unique<Layer>();
-    l->layer = CreateLayer(ds_, name, wkbMultiPolygon25D, srs_.get(), file_.path());
+    l->layer = CreateLayer(ds_, name, wkbMultiPolygon25D, srs_.get(), file_.path(),
+                           options_.layer_options);
     auto field = [&](const char* n, OGRFieldType t) {
       AddField(l->layer, n, t, file_.path());
       l->fields.insert(n);
@@ -377,8 +478,8 @@ void OgrCityModelWriter::Write(const Building& b) {
     const Surface& s = b.surfaces[si];
     if (multi_layer_ && !layers_.count(SurfaceLayerName(s.type))) {
       auto l = std::make_unique<Layer>();  // closure surfaces: only when present
-      l->layer =
-          CreateLayer(ds_, SurfaceLayerName(s.type), wkbMultiPolygon25D, srs_.get(), file_.path());
+      l->layer = CreateLayer(ds_, SurfaceLayerName(s.type), wkbMultiPolygon25D, srs_.get(),
+                             file_.path(), options_.layer_options);
       for (const char* n : {"building_id", "surface_id", "surface_type"}) {
         AddField(l->layer, n, OFTString, file_.path());
         l->fields.insert(n);
@@ -531,7 +632,8 @@ CityModel ReadOgrCityModel(const std::string& path) {
 namespace {
 
 void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerData& data,
-                   const std::string& description, OGRSpatialReference* srs) {
+                   const std::string& description, OGRSpatialReference* srs,
+                   const std::vector<std::string>& layer_options) {
   const std::string& layer_name = data.name;
   const LayerGeometry geometry = data.geometry;
   const OGRwkbGeometryType type = geometry == LayerGeometry::kLineStringZ  ? wkbLineString25D
@@ -547,7 +649,7 @@ void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerD
   if (!srs && type == wkbLineString && EQUAL(ds->GetDriver()->GetDescription(), "GPKG") &&
       cartesian.SetFromUserInput("LOCAL_CS[\"Undefined cartesian SRS\"]") == OGRERR_NONE)
     srs = &cartesian;
-  OGRLayer* layer = CreateLayer(ds, layer_name, type, srs, path);
+  OGRLayer* layer = CreateLayer(ds, layer_name, type, srs, path, layer_options);
   if (!description.empty()) layer->SetMetadataItem("DESCRIPTION", description.c_str());
   std::map<std::string, OGRFieldType> fields;
   for (const auto& f : data.features) {
@@ -595,6 +697,18 @@ void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerD
 
 }  // namespace
 
+void CheckFeatureLayerOutput(const std::string& path, const FeatureLayerOptions& options) {
+  const std::string driver = options.driver.empty() ? OgrDriverForPath(path) : options.driver;
+  if (driver.empty())
+    throw Error(AtLine(path, 0, "cannot tell the vector format from the extension; name it"));
+  WriteDriver(driver, path);
+  if (options.update && !options.dataset_options.empty())
+    throw Error(AtLine(path, 0, "dataset creation options do not apply when updating a file"));
+  CheckOgrCreationOptions(path, driver, options.dataset_options, false);
+  CheckOgrCreationOptions(path, driver, options.layer_options, true);
+  CheckOutputPath(path, options.overwrite || options.update);
+}
+
 void WriteFeatureLayers(const std::string& path, const std::vector<FeatureLayerData>& layers,
                         const FeatureLayerOptions& options) {
   const std::string driver = options.driver.empty() ? OgrDriverForPath(path) : options.driver;
@@ -605,9 +719,13 @@ void WriteFeatureLayers(const std::string& path, const std::vector<FeatureLayerD
     throw Error(AtLine(path, 0,
                        "format " + driver + " holds one layer; " + std::to_string(layers.size()) +
                            " needed (use .gpkg)"));
+  if (options.update && !options.dataset_options.empty())
+    throw Error(AtLine(path, 0, "dataset creation options do not apply when updating a file"));
+  CheckOgrCreationOptions(path, driver, options.dataset_options, false);
+  CheckOgrCreationOptions(path, driver, options.layer_options, true);
   OutputFile file(path, options.overwrite || options.update);
   auto srs = Make3dSrs(options.crs, path, !EQUAL(driver.c_str(), "GeoJSON"));
-  GDALDataset* ds = OpenOutput(drv, file, options.update);
+  GDALDataset* ds = OpenOutput(drv, file, options.update, options.dataset_options);
   struct Closer {
     GDALDataset*& ds;
     ~Closer() {
@@ -617,7 +735,7 @@ void WriteFeatureLayers(const std::string& path, const std::vector<FeatureLayerD
   QuietGdal quiet;
   for (const FeatureLayerData& l : layers)
     WriteOneLayer(ds, path, l, l.description.empty() ? options.description : l.description,
-                  srs.get());
+                  srs.get(), options.layer_options);
   CPLErrorReset();
   GDALClose(ds);
   ds = nullptr;

@@ -74,6 +74,11 @@ CityModel ReadOgrCityModel(const std::string& path);
 std::string OgrDriverForPath(const std::string& path);
 // True when `name` is a GDAL vector driver that can create files.
 bool IsOgrVectorWriteDriver(const std::string& name);
+// Throws roofsweep::Error naming `path` unless every "NAME=VALUE" of
+// `options` is a dataset (`layer` false) or layer creation option that the
+// GDAL driver `driver` lists, with a value of the listed type.
+void CheckOgrCreationOptions(const std::string& path, const std::string& driver,
+                             const std::vector<std::string>& options, bool layer);
 
 // ---- Extra layers (lines3d, half planes, ...) ------------------------------
 
@@ -99,6 +104,12 @@ struct FeatureLayerOptions {
   // Layer description (GPKG gpkg_contents.description, DESCRIPTION metadata
   // elsewhere); empty: none.
   std::string description;
+  // GDAL dataset and layer creation options, "NAME=VALUE", as in
+  // CityModelWriteOptions (checked against the driver's lists; layer options
+  // override roofsweep's own and apply to every layer). Dataset options
+  // are refused with `update` (the file exists already).
+  std::vector<std::string> dataset_options;
+  std::vector<std::string> layer_options;
 };
 
 // Writes `features` as layer `layer` (fields are the union of the features'
@@ -117,5 +128,10 @@ struct FeatureLayerData {
 };
 void WriteFeatureLayers(const std::string& path, const std::vector<FeatureLayerData>& layers,
                         const FeatureLayerOptions& options);
+
+// The checks WriteFeatureLayers makes before writing (format known and able
+// to create files, creation options valid, folder present, no existing file
+// without overwrite/update), for commands to fail before their work.
+void CheckFeatureLayerOutput(const std::string& path, const FeatureLayerOptions& options);
 
 }  // namespace roofsweep

@@ -73,6 +73,18 @@ ArgParser& ArgParser::Repeated(const std::string& names, std::vector<std::string
       names, metavar, help, [out](const std::string& v) { out->push_back(v); }, true);
 }
 
+ArgParser& ArgParser::KeyValues(const std::string& names, std::vector<std::string>* out,
+                                const std::string& help) {
+  const std::string first = SplitNames(names).front();
+  return Add(
+      names, "NAME=VALUE", help,
+      [out, first](const std::string& v) {
+        SplitKeyValue(first, v);
+        out->push_back(v);
+      },
+      true);
+}
+
 ArgParser& ArgParser::Positional(const std::string& name, std::string* out, const std::string& help,
                                  bool required) {
   Pos p;

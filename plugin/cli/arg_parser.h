@@ -38,6 +38,10 @@ class ArgParser {
   // A repeatable option collecting every value, e.g. "-co NAME=VALUE".
   ArgParser& Repeated(const std::string& names, std::vector<std::string>* out,
                       const std::string& metavar, const std::string& help);
+  // A repeatable "NAME=VALUE" option (-co, -lco, -dsco); a value without
+  // '=' or without a name is a UsageError.
+  ArgParser& KeyValues(const std::string& names, std::vector<std::string>* out,
+                       const std::string& help);
   // Positional arguments in order; the last may take several values.
   ArgParser& Positional(const std::string& name, std::string* out, const std::string& help,
                         bool required = true);

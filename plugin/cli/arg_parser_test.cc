@@ -53,6 +53,26 @@ TEST(ArgParser, WrongUsageThrowsWithSynopsis) {
   EXPECT_THROW(make().Parse({"x", "y"}), UsageError);  // too many
 }
 
+TEST(ArgParser, KeyValuesAreCheckedWhenParsed) {
+  std::vector<std::string> lco;
+  auto parse = [&](std::vector<std::string> args) {
+    lco.clear();
+    ArgParser p("lines", "Lines.");
+    p.KeyValues("-lco", &lco, "layer creation option");
+    return p.Parse(args);
+  };
+  ASSERT_TRUE(parse({"-lco", "FID=fid", "-lco", "DESCRIPTION=a=b"}));
+  EXPECT_EQ(lco, (std::vector<std::string>{"FID=fid", "DESCRIPTION=a=b"}));
+  try {
+    parse({"-lco", "SPATIAL_INDEX"});
+    FAIL();
+  } catch (const UsageError& e) {
+    EXPECT_EQ(e.message, "Option -lco expects NAME=VALUE, got 'SPATIAL_INDEX'");
+    EXPECT_NE(e.synopsis.find("[-lco NAME=VALUE]*"), std::string::npos) << e.synopsis;
+  }
+  EXPECT_THROW(parse({"-lco", "=x"}), UsageError);
+}
+
 TEST(ArgParser, KeyValue) {
   EXPECT_EQ(SplitKeyValue("-co", "A=b=c").second, "b=c");
   EXPECT_THROW(SplitKeyValue("-co", "novalue"), UsageError);

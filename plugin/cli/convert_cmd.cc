@@ -22,6 +22,14 @@ int Convert(const std::vector<std::string>& args, Context& ctx) {
       .Option("-t_srs", &r.target_crs, "SRS",
               "reproject the output to this CRS through PROJ (EPSG:code, WKT, PROJ string); "
               "a 2D CRS keeps ellipsoidal heights, ballpark height steps are refused")
+      .KeyValues("-co", &r.write.creation_options,
+                 "creation option of roofsweep's writers: CityGML DECIMALS=N (decimals per "
+                 "coordinate; default 4, 9 for degrees); CityJSON has none")
+      .KeyValues("-dsco", &r.write.dataset_options,
+                 "GDAL dataset creation option for OGR outputs (e.g. GPKG VERSION=1.2)")
+      .KeyValues("-lco", &r.write.layer_options,
+                 "GDAL layer creation option for OGR outputs, every layer (e.g. GPKG "
+                 "SPATIAL_INDEX=NO, FID=fid, GEOMETRY_NAME=geom)")
       .Flag("-overwrite", &r.write.overwrite, "replace an existing output file")
       .Flag("-update", &r.write.update,
             "GeoPackage: add or replace roofsweep's layers in an existing file, keep the others")

@@ -24,6 +24,10 @@ int Lines(const std::vector<std::string>& args, Context& ctx) {
               "gradient fusion of the colour bands (max)")
       .Option("-min-length|--min-length", &min_length, "PX", "shortest segment kept (15)")
       .Option("-png|--png", &r.png_dir, "DIR", "also write <layer>.png overlays into DIR")
+      .KeyValues("-dsco", &r.dataset_options,
+                 "GDAL dataset creation option (e.g. GPKG VERSION=1.2)")
+      .KeyValues("-lco", &r.layer_options,
+                 "GDAL layer creation option, every layer (e.g. GPKG SPATIAL_INDEX=NO)")
       .Flag("-overwrite|--overwrite", &r.overwrite, "replace an existing output file")
       .Example("roofsweep lines out/block -o lines.gpkg -png out/overlays")
       .Example("roofsweep lines vgg:merton1 -o merton_lines.gpkg --method dizenzo");

@@ -124,8 +124,14 @@ std::string LinesLayerName(const std::string& image_path) {
 LinesSummary RunLines(const LinesRequest& r, Progress& progress) {
   const auto t_start = std::chrono::steady_clock::now();
   if (r.output.empty()) throw Error("lines: no output file given (-o)");
-  // Refuse an existing output before the work, not after it.
-  CheckOutputPath(r.output, r.overwrite);
+  FeatureLayerOptions lo;
+  lo.driver = r.format;
+  lo.overwrite = r.overwrite;
+  lo.dataset_options = r.dataset_options;
+  lo.layer_options = r.layer_options;
+  // Refuse an existing output, an unknown format or bad creation options
+  // before the work, not after it.
+  CheckFeatureLayerOutput(r.output, lo);
   const BlockManifest manifest = OpenBlockManifest(r.block);
   if (manifest.images.empty()) throw Error(r.block + ": the block has no images");
   if (!r.png_dir.empty()) {
@@ -214,9 +220,6 @@ LinesSummary RunLines(const LinesRequest& r, Progress& progress) {
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
 
-  FeatureLayerOptions lo;
-  lo.driver = r.format;
-  lo.overwrite = r.overwrite;
   WriteFeatureLayers(r.output, data, lo);
   progress.Update(1.0, "done");
   out.seconds = MsSince(t_start) / 1000.0;

@@ -13,6 +13,7 @@ struct LinesRequest {
   std::string output;  // vector file holding one layer per image (.gpkg)
   std::string format;  // GDAL driver; empty: from the extension
   bool overwrite = false;
+  std::vector<std::string> dataset_options, layer_options;  // -dsco, -lco NAME=VALUE
   std::string png_dir;  // optional: overlays of the segments on each image
   EdgeOptions edges;
 };

@@ -16,6 +16,10 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
   p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
       .Option("-o", &r.output, "FILE", "output with a LineStringZ layer lines3d (.gpkg, .fgb, ...)")
       .Option("-of|-f", &r.format, "FORMAT", "GDAL vector driver, when the extension does not tell")
+      .KeyValues("-dsco", &r.dataset_options,
+                 "GDAL dataset creation option (e.g. GPKG VERSION=1.2)")
+      .KeyValues("-lco", &r.layer_options,
+                 "GDAL layer creation option (e.g. GPKG SPATIAL_INDEX=NO, FID=fid)")
       .Flag("-overwrite", &r.overwrite, "replace an existing output file")
       .Option("-a_srs", &r.assign_crs, "SRS", "CRS to assign to the lines (no reprojection)")
       .Option("-t_srs", &r.target_crs, "SRS",

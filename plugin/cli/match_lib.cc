@@ -40,6 +40,14 @@ bool IsRoofKind(const std::string& k) {
 MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   MatchSummary out;
   if (r.output.empty()) throw Error("match: no output file given (-o)");
+  FeatureLayerOptions lo;
+  lo.driver = r.format;
+  lo.overwrite = r.overwrite;
+  lo.dataset_options = r.dataset_options;
+  lo.layer_options = r.layer_options;
+  // Refuse an existing output, an unknown format or bad creation options
+  // before the work, not after it.
+  CheckFeatureLayerOutput(r.output, lo);
   auto t0 = std::chrono::steady_clock::now();
   const BlockManifest manifest = OpenBlockManifest(r.block);
   const Block block = ManifestToBlock(manifest);
@@ -103,12 +111,9 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
     f.strings["observations"] = obs;
     features.push_back(std::move(f));
   }
-  FeatureLayerOptions lo;
-  lo.driver = r.format;
   lo.crs = !r.target_crs.empty()   ? r.target_crs
            : !r.assign_crs.empty() ? r.assign_crs
                                    : manifest.crs;
-  lo.overwrite = r.overwrite;
   WriteFeatureLayer(r.output, "lines3d", LayerGeometry::kLineStringZ, features, lo);
   out.write_s = Since(t0);
   progress.Update(1.0, "done");

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
@@ -15,6 +16,7 @@ struct MatchRequest {
   std::string output;  // lines3d layer file (.gpkg, .fgb, ...)
   std::string format;  // GDAL driver; empty: from the extension
   bool overwrite = false;
+  std::vector<std::string> dataset_options, layer_options;  // -dsco, -lco NAME=VALUE
   std::string assign_crs;  // -a_srs: CRS written without transforming (block CRS otherwise)
   std::string target_crs;  // -t_srs: reproject the lines from the block CRS (excludes -a_srs)
   // Optional ground truth (groundtruth_edges.json of `roofsweep simulate`):

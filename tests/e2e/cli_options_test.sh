@@ -52,7 +52,35 @@ test_match_t_srs_reprojects_lines() {
   ogrinfo -ro -so "$WORK/lines_wgs84.gpkg" lines3d >"$WORK/ogr.txt" 2>&1
   grep -q 'GEOGCRS\["WGS 84"' "$WORK/ogr.txt" && grep -qE 'Extent: \(11\.56[0-9]*, 48\.1' "$WORK/ogr.txt" \
     && pass match_t_srs_degrees || fail match_t_srs_degrees "$(grep -E 'Extent|CRS' "$WORK/ogr.txt")"
-  expect_fail match_t_srs_unknown "$WORK/l.gpkg" "EPSG:999999" -- match "$SIM" -o "$WORK/l.gpkg" -t_srs EPSG:999999
+  expect_fail match_t_srs_unknown "$WORK/uk_lines.gpkg" "EPSG:999999" -- match "$SIM" -o "$WORK/uk_lines.gpkg" -t_srs EPSG:999999
+}
+
+test_creation_options() {
+  small_block || return
+  expect_ok convert_lco convert "$SIM/groundtruth.gml" "$WORK/lco.gpkg" -lco FID=myfid -lco SPATIAL_INDEX=NO -dsco VERSION=1.2 -q || return
+  ogrinfo -ro -so "$WORK/lco.gpkg" roof_surfaces >"$WORK/ogr.txt" 2>&1
+  grep -q '^FID Column = myfid' "$WORK/ogr.txt" && pass lco_fid_column || fail lco_fid_column "$(grep -i fid "$WORK/ogr.txt")"
+  ogrinfo -ro -q "$WORK/lco.gpkg" -sql "SELECT COUNT(*) AS n FROM sqlite_master WHERE name LIKE 'rtree_%'" >"$WORK/ogr.txt" 2>&1
+  grep -q 'n (Integer) = 0' "$WORK/ogr.txt" && pass lco_no_spatial_index || fail lco_no_spatial_index "$(cat "$WORK/ogr.txt")"
+  ogrinfo -ro -q "$WORK/lco.gpkg" -sql "PRAGMA user_version" >"$WORK/ogr.txt" 2>&1
+  grep -q '= 10200' "$WORK/ogr.txt" && pass dsco_gpkg_version || fail dsco_gpkg_version "$(cat "$WORK/ogr.txt")"
+  expect_ok convert_co_decimals convert "$SIM/groundtruth.gml" "$WORK/d1.gml" -co DECIMALS=1 -q || return
+  python3 -c "
+import re,sys; t=open(sys.argv[1]).read(); nums=re.findall(r'posList[^>]*>([^<]*)<', t)
+assert nums and all(len(x.split('.')[1]) <= 1 for p in nums for x in p.split() if '.' in x), nums[:1]" "$WORK/d1.gml" \
+    && pass co_decimals_one || fail co_decimals_one "more than one decimal written"
+  expect_ok match_lco match "$SIM" -o "$WORK/m.gpkg" -lco GEOMETRY_NAME=shape -q || return
+  ogrinfo -ro -so "$WORK/m.gpkg" lines3d 2>&1 | grep -q '^Geometry Column = shape' && pass match_lco_geometry_name || fail match_lco_geometry_name "no shape column"
+  expect_ok lines_lco lines "$SIM" -o "$WORK/l.gpkg" -lco FID=seg -q || return
+  ogrinfo -ro -so "$WORK/l.gpkg" "$(ogrinfo -ro -q "$WORK/l.gpkg" | awk -F'[: ]+' 'NR==1{print $2}')" 2>&1 | grep -q '^FID Column = seg' \
+    && pass lines_lco_fid || fail lines_lco_fid "no FID column seg"
+  expect_fail lco_malformed "$WORK/bad.gpkg" "NAME=VALUE" -- convert "$SIM/groundtruth.gml" "$WORK/bad.gpkg" -lco SPATIAL_INDEX
+  grep -q '^Usage: roofsweep convert' "$WORK/stderr.txt" && pass lco_malformed_usage || fail lco_malformed_usage "no usage"
+  expect_fail lco_unknown "$WORK/bad.gpkg" "layer creation option 'BOGUS'" -- convert "$SIM/groundtruth.gml" "$WORK/bad.gpkg" -lco BOGUS=1
+  expect_fail lco_bad_value "$WORK/bad.gpkg" "SPATIAL_INDEX expects YES or NO" -- match "$SIM" -o "$WORK/bad.gpkg" -lco SPATIAL_INDEX=maybe
+  expect_fail dsco_on_cityjson "$WORK/bad.city.json" "-dsco/-lco" -- convert "$SIM/groundtruth.gml" "$WORK/bad.city.json" -dsco VERSION=1.2
+  expect_fail co_on_gpkg "$WORK/bad.gpkg" "-co" -- convert "$SIM/groundtruth.gml" "$WORK/bad.gpkg" -co DECIMALS=2
+  expect_fail co_unknown_cityjson "$WORK/bad.city.json" "no creation option 'DECIMALS'" -- convert "$SIM/groundtruth.gml" "$WORK/bad.city.json" -co DECIMALS=2
 }
 
 run_tests
