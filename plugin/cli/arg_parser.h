@@ -19,6 +19,16 @@ struct UsageError {
 // multi-letter options (-of GPKG, -overwrite, -co NAME=VALUE repeatable),
 // positional arguments, and generated --help text.
 //
+// Every command also takes `-options FILE.json`: a JSON object whose keys
+// are option names without the leading dash ({"min_length": 20,
+// "overwrite": true, "lco": ["FID=fid"]}), applied as if given on the
+// command line; an option given on the command line wins over the file.
+// Values: true/false for flags (false leaves the flag off), numbers for
+// numeric options, strings for the others, an array of strings (or an
+// object {"NAME": value}) for repeatable ones. An unknown key, a wrong type
+// or malformed JSON is a UsageError naming the file and the JSON pointer
+// (or line).
+//
 // Written here rather than taken from CLI11 (which Debian has) because CLI11
 // reads "-of" as the two short flags -o -f; GDAL's utilities, whose
 // conventions roofsweep follows, parse their argv by hand in the same way.
@@ -62,12 +72,14 @@ class ArgParser {
   bool Given(const std::string& name) const;
 
  private:
+  enum class Kind { kFlag, kString, kNumber, kRepeated };
   struct Opt {
     std::vector<std::string> names;
     std::string metavar;  // empty for flags
     std::string help;
     std::function<void(const std::string&)> set;
     bool repeated = false;
+    Kind kind = Kind::kString;
   };
   struct Pos {
     std::string name;
@@ -79,8 +91,10 @@ class ArgParser {
   };
   const Opt* Find(const std::string& name) const;
   bool ParseOrThrow(const std::vector<std::string>& args);
+  // Applies the -options file to the options not given on the command line.
+  void ApplyOptionsFile(const std::string& path);
   ArgParser& Add(const std::string& names, const std::string& metavar, const std::string& help,
-                 std::function<void(const std::string&)> set, bool repeated = false);
+                 std::function<void(const std::string&)> set, Kind kind);
 
   std::string command_;
   std::string purpose_;

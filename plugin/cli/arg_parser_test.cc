@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
+#include "tests/support/shared_data.h"
+
 namespace roofsweep::cli {
 namespace {
 
@@ -71,6 +75,102 @@ TEST(ArgParser, KeyValuesAreCheckedWhenParsed) {
     EXPECT_NE(e.synopsis.find("[-lco NAME=VALUE]*"), std::string::npos) << e.synopsis;
   }
   EXPECT_THROW(parse({"-lco", "=x"}), UsageError);
+}
+
+struct OptionsFileFixture {
+  std::string of = "GPKG", in;
+  bool overwrite = false, update = false;
+  double factor = 8;
+  int n = 3;
+  std::vector<std::string> lco;
+  ArgParser p{"match", "Matches."};
+  OptionsFileFixture() {
+    p.Option("-of|-f", &of, "FORMAT", "format")
+        .Flag("-overwrite", &overwrite, "replace")
+        .Flag("-update", &update, "update")
+        .Option("-chromatic_factor", &factor, "F", "factor")
+        .Option("-min-length|--min-length", &n, "N", "count")
+        .KeyValues("-lco", &lco, "layer creation option")
+        .Positional("BLOCK", &in, "block");
+  }
+};
+
+std::string WriteJson(const std::string& name, const std::string& text) {
+  const std::string path = roofsweep::testing::TempDir("opts") + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string UsageMessage(OptionsFileFixture& f, const std::vector<std::string>& args) {
+  try {
+    f.p.Parse(args);
+  } catch (const UsageError& e) {
+    EXPECT_NE(e.synopsis.find("Usage: roofsweep match"), std::string::npos);
+    return e.message;
+  }
+  return "";
+}
+
+TEST(ArgParser, OptionsFileAppliesAndCommandLineWins) {
+  const std::string path = WriteJson("o.json", R"({
+    "chromatic_factor": 6, "min-length": 20, "overwrite": true, "update": false,
+    "of": "FlatGeobuf", "lco": ["FID=fid", "SPATIAL_INDEX=NO"]})");
+  OptionsFileFixture f;
+  ASSERT_TRUE(f.p.Parse({"blk", "-options", path, "-of", "GPKG"}));
+  EXPECT_DOUBLE_EQ(f.factor, 6);
+  EXPECT_EQ(f.n, 20);
+  EXPECT_TRUE(f.overwrite);
+  EXPECT_FALSE(f.update);
+  EXPECT_EQ(f.of, "GPKG");  // the command line wins, whatever the order
+  EXPECT_EQ(f.lco, (std::vector<std::string>{"FID=fid", "SPATIAL_INDEX=NO"}));
+  EXPECT_EQ(f.in, "blk");
+
+  // A repeatable option given on the command line replaces the file's list.
+  OptionsFileFixture g;
+  ASSERT_TRUE(g.p.Parse({"-lco", "GEOMETRY_NAME=g", "-options", path, "blk"}));
+  EXPECT_EQ(g.lco, (std::vector<std::string>{"GEOMETRY_NAME=g"}));
+  // An object spells NAME=VALUE pairs.
+  OptionsFileFixture h;
+  ASSERT_TRUE(
+      h.p.Parse({"-options", WriteJson("obj.json", R"({"lco": {"FID": "x", "A": 2}})"), "b"}));
+  EXPECT_EQ(h.lco, (std::vector<std::string>{"A=2", "FID=x"}));
+}
+
+TEST(ArgParser, OptionsFileErrorsNameFileAndPointer) {
+  auto message = [](const std::string& name, const std::string& json) {
+    OptionsFileFixture f;
+    return UsageMessage(f, {"blk", "-options", WriteJson(name, json)});
+  };
+  std::string m = message("unknown.json", R"({"min_length": 20})");
+  EXPECT_NE(m.find("unknown.json: /min_length: unknown option 'min_length'"), std::string::npos)
+      << m;
+  m = message("type.json", R"({"chromatic_factor": "six"})");
+  EXPECT_NE(m.find("type.json: /chromatic_factor: expects a number, got \"six\""),
+            std::string::npos)
+      << m;
+  m = message("flag.json", R"({"overwrite": "yes"})");
+  EXPECT_NE(m.find("flag.json: /overwrite: expects true or false"), std::string::npos) << m;
+  m = message("whole.json", R"({"min-length": 1.5})");
+  EXPECT_NE(m.find("whole.json: /min-length: Option -min-length expects a whole number"),
+            std::string::npos)
+      << m;
+  m = message("item.json", R"({"lco": ["FID=x", 3]})");
+  EXPECT_NE(m.find("item.json: /lco/1: expects a string"), std::string::npos) << m;
+  m = message("kv.json", R"({"lco": ["FID"]})");
+  EXPECT_NE(m.find("kv.json: /lco: Option -lco expects NAME=VALUE"), std::string::npos) << m;
+  m = message("bad.json", "{\n  \"overwrite\": true,\n  oops\n}");
+  EXPECT_NE(m.find("bad.json:3: malformed JSON"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  m = message("array.json", "[1, 2]");
+  EXPECT_NE(m.find("array.json: expected a JSON object"), std::string::npos) << m;
+  m = message("self.json", R"({"options": "other.json"})");
+  EXPECT_NE(m.find("/options: unknown option"), std::string::npos) << m;
+  OptionsFileFixture f;
+  m = UsageMessage(f, {"blk", "-options", "/nonexistent/o.json"});
+  EXPECT_NE(m.find("/nonexistent/o.json: cannot read"), std::string::npos) << m;
+  OptionsFileFixture g;
+  m = UsageMessage(g, {"blk", "-options"});
+  EXPECT_NE(m.find("-options needs a value"), std::string::npos) << m;
 }
 
 TEST(ArgParser, KeyValue) {

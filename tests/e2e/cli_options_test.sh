@@ -83,4 +83,23 @@ assert nums and all(len(x.split('.')[1]) <= 1 for p in nums for x in p.split() i
   expect_fail co_unknown_cityjson "$WORK/bad.city.json" "no creation option 'DECIMALS'" -- convert "$SIM/groundtruth.gml" "$WORK/bad.city.json" -co DECIMALS=2
 }
 
+test_options_file() {
+  small_block || return
+  printf '{"min_length": 40, "lco": ["FID=zz"], "overwrite": true}\n' >"$WORK/opts.json"
+  expect_ok options_file match "$SIM" -o "$WORK/o40.gpkg" -options "$WORK/opts.json" -q || return
+  expect_ok options_cli_wins match "$SIM" -o "$WORK/o15.gpkg" -options "$WORK/opts.json" -min_length 15 -q || return
+  local n40 n15
+  n40=$(ogrinfo -ro -so "$WORK/o40.gpkg" lines3d | awk '/Feature Count/{print $3}')
+  n15=$(ogrinfo -ro -so "$WORK/o15.gpkg" lines3d | awk '/Feature Count/{print $3}')
+  ogrinfo -ro -so "$WORK/o40.gpkg" lines3d | grep -q '^FID Column = zz' && [[ $n40 -gt 0 && $n40 -lt $n15 ]] \
+    && pass options_file_applied || fail options_file_applied "40 px: $n40 lines, 15 px: $n15 lines"
+  printf '{"min_length": 20,\n "bogus": 1}\n' >"$WORK/unknown.json"
+  expect_fail options_unknown_key "$WORK/u.gpkg" "unknown.json: /bogus: unknown option" -- match "$SIM" -o "$WORK/u.gpkg" -options "$WORK/unknown.json"
+  printf '{"min_length": "long"}\n' >"$WORK/type.json"
+  expect_fail options_wrong_type "$WORK/u.gpkg" "type.json: /min_length: expects a number" -- match "$SIM" -o "$WORK/u.gpkg" -options "$WORK/type.json"
+  printf '{"overwrite": true,\n "min_length": }\n' >"$WORK/broken.json"
+  expect_fail options_malformed "$WORK/u.gpkg" "broken.json:2: malformed JSON" -- match "$SIM" -o "$WORK/u.gpkg" -options "$WORK/broken.json"
+  grep -q '^Usage: roofsweep match' "$WORK/stderr.txt" && pass options_malformed_usage || fail options_malformed_usage "no usage"
+}
+
 run_tests
