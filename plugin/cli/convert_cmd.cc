@@ -3,6 +3,7 @@
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/convert_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -41,6 +42,8 @@ int Convert(const std::vector<std::string>& args, Context& ctx) {
   if (!p.Parse(args)) return 0;
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
+  RequireCityModelFormat(p, r.output, r.write.format);
+  RequireNewOutput(p, r.output, r.write.overwrite || r.write.update);
   r.write.check_geometry = !no_check;
   const ConvertSummary s = RunConvert(r, *ctx.progress);
   if (!ctx.quiet) {

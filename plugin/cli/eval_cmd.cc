@@ -3,6 +3,7 @@
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/eval_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -32,6 +33,7 @@ int Eval(const std::vector<std::string>& args, Context&) {
       .Example("roofsweep eval out/buildings.gml out/block")
       .Example("roofsweep eval buildings.gpkg groundtruth.gml -lines lines3d.gpkg --json");
   if (!p.Parse(args)) return 0;
+  RequireNewOutput(p, r.png, r.overwrite);
   const EvalReport rep = RunEval(r);
   if (json) {
     std::cout << rep.json.dump(2) << "\n";

@@ -1,9 +1,11 @@
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/import_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -34,6 +36,14 @@ int Import(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep import vgg merton1 -o merton1.json");
   if (!p.Parse(args)) return 0;
   if (r.output.empty()) throw UsageError{"Missing option -o BLOCK.json", p.Synopsis()};
+  std::string lower = r.format;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  const auto& known = ImportFormats();
+  if (std::find(known.begin(), known.end(), lower) == known.end())
+    throw UsageError{"Unknown import format '" + r.format + "' (one of: " + formats + ")",
+                     p.Synopsis()};
+  RequireNewOutput(p, r.output, r.overwrite);
   if (!std::isnan(ground)) r.options.ground_height = ground;
   r.options.check_images = !no_check;
   const ImportSummary s = RunImport(r, *ctx.progress);

@@ -4,6 +4,7 @@
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/lines_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -33,6 +34,8 @@ int Lines(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep lines vgg:merton1 -o merton_lines.gpkg --method dizenzo");
   if (!p.Parse(args)) return 0;
   if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());
+  RequireVectorFormat(p, r.output, r.format);
+  RequireNewOutput(p, r.output, r.overwrite);
   if (method == "max") {
     r.edges.method = GradientMethod::kMax;
   } else if (method == "dizenzo") {

@@ -3,6 +3,7 @@
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/match_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -35,6 +36,9 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
   if (!p.Parse(args)) return 0;
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
+  if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());
+  RequireVectorFormat(p, r.output, r.format);
+  RequireNewOutput(p, r.output, r.overwrite);
   const MatchSummary s = RunMatch(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatMatchSummary(s);

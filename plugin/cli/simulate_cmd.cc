@@ -4,6 +4,7 @@
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/simulate_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -40,6 +41,7 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep simulate -citygml 3910_5819.gml -o out/berlin");
   if (!p.Parse(args)) return 0;
   if (r.output_dir.empty()) throw UsageError("Missing option -o DIR", p.Synopsis());
+  RequireNewOutput(p, r.output_dir, r.overwrite);
   if (seed < 0) throw UsageError("Option -seed expects a non-negative number", p.Synopsis());
   r.seed = static_cast<uint64_t>(seed);
   if (!origin.empty()) {

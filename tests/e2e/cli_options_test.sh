@@ -102,4 +102,57 @@ test_options_file() {
   grep -q '^Usage: roofsweep match' "$WORK/stderr.txt" && pass options_malformed_usage || fail options_malformed_usage "no usage"
 }
 
+# expect_usage NAME CMD PATTERN -- roofsweep args...: exit 1, one ERROR line
+# matching PATTERN, the command's usage on stderr, nothing on stdout.
+expect_usage() {
+  local name=$1 cmd=$2 pattern=$3
+  shift 4
+  local rc=0 nerr
+  "$RS" "$@" >"$WORK/stdout.txt" 2>"$WORK/stderr.txt" || rc=$?
+  nerr=$(grep -c '^ERROR' "$WORK/stderr.txt" || true)
+  if [[ $rc -ne 1 ]]; then
+    fail "$name" "exit $rc (expected 1): $(head -c 300 "$WORK/stderr.txt")"
+  elif [[ $nerr -ne 1 ]] || ! grep -qE -- "^ERROR.*$pattern" "$WORK/stderr.txt"; then
+    fail "$name" "expected one ERROR line matching /$pattern/: $(head -c 400 "$WORK/stderr.txt")"
+  elif ! grep -q "^Usage: roofsweep $cmd " "$WORK/stderr.txt"; then
+    fail "$name" "no usage of $cmd: $(head -c 400 "$WORK/stderr.txt")"
+  elif [[ -s "$WORK/stdout.txt" ]]; then
+    fail "$name" "stdout not empty: $(head -c 200 "$WORK/stdout.txt")"
+  else
+    pass "$name"
+  fi
+}
+
+test_wrong_usage() {
+  small_block || return
+  local gt="$SIM/groundtruth.gml"
+  # Unknown option.
+  expect_usage usage_unknown_option_convert convert "Unknown option name '-bogus'" -- convert "$gt" "$WORK/u1.gpkg" -bogus
+  expect_usage usage_unknown_option_match match "Unknown option name '-frobnicate'" -- match "$SIM" -o "$WORK/u1.gpkg" -frobnicate 3
+  # Missing argument, missing option value.
+  expect_usage usage_missing_argument convert "Missing argument OUT" -- convert "$gt"
+  expect_usage usage_missing_value convert "Option -of needs a value" -- convert "$gt" "$WORK/u1.gpkg" -of
+  expect_usage usage_missing_value_lco lines "Option -lco needs a value" -- lines "$SIM" -o "$WORK/u1.gpkg" -lco
+  expect_usage usage_missing_output match "Missing option -o" -- match "$SIM"
+  expect_usage usage_bad_number match "Option -min_length expects a number" -- match "$SIM" -o "$WORK/u1.gpkg" -min_length ten
+  # Unknown format.
+  expect_usage usage_unknown_format_convert convert "Unknown output format 'Bogus'" -- convert "$gt" "$WORK/u1.xyz" -of Bogus
+  expect_usage usage_unknown_extension_convert convert "Cannot tell the format of .*u1.xyz" -- convert "$gt" "$WORK/u1.xyz"
+  expect_usage usage_unknown_format_match match "Unknown output format 'Bogus'" -- match "$SIM" -o "$WORK/u1.gpkg" -of Bogus
+  expect_usage usage_unknown_format_lines lines "Unknown output format 'Bogus'" -- lines "$SIM" -o "$WORK/u1.gpkg" -of Bogus
+  expect_usage usage_unknown_extension_match match "Cannot tell the vector format" -- match "$SIM" -o "$WORK/u1.xyz"
+  expect_usage usage_unknown_import_format import "Unknown import format 'bogus'" -- import bogus "$SIM/orientation/opk.txt" -o "$WORK/u1.json"
+  for f in u1.gpkg u1.xyz u1.json; do [[ -e "$WORK/$f" ]] && fail "usage_left_$f" "output written"; done
+  # Output exists without -overwrite: refused before any work, file untouched.
+  touch "$WORK/exists.gpkg" "$WORK/exists.json" "$WORK/exists.png"
+  mkdir -p "$WORK/exists_dir"
+  expect_usage usage_exists_convert convert "exists.gpkg exists; pass -overwrite" -- convert "$gt" "$WORK/exists.gpkg"
+  expect_usage usage_exists_match match "exists.gpkg exists; pass -overwrite" -- match "$SIM" -o "$WORK/exists.gpkg"
+  expect_usage usage_exists_lines lines "exists.gpkg exists; pass -overwrite" -- lines "$SIM" -o "$WORK/exists.gpkg"
+  expect_usage usage_exists_import import "exists.json exists; pass -overwrite" -- import opk "$SIM/orientation/opk.txt" -camera "$SIM/orientation/camera.yaml" -o "$WORK/exists.json"
+  expect_usage usage_exists_simulate simulate "exists_dir exists; pass -overwrite" -- simulate -preset easy -o "$WORK/exists_dir"
+  expect_usage usage_exists_eval eval "exists.png exists; pass -overwrite" -- eval "$gt" "$SIM" -png "$WORK/exists.png"
+  [[ ! -s "$WORK/exists.gpkg" && ! -s "$WORK/exists.json" ]] && pass usage_exists_untouched || fail usage_exists_untouched "an existing output was changed"
+}
+
 run_tests

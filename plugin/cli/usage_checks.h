@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+#include "plugin/cli/arg_parser.h"
+
+namespace roofsweep::cli {
+
+// Wrong usage the parser cannot see by itself: checked right after
+// ArgParser::Parse, before any work, and thrown as UsageError so the program
+// prints the one-line error plus the command's usage and exits 1, like an
+// unknown option.
+
+// `path` exists and the command may not replace it (`replace` false).
+void RequireNewOutput(const ArgParser& p, const std::string& path, bool replace);
+
+// -of for a GDAL vector output: `format` names a driver that can create
+// files, or is empty and `path`'s extension tells one.
+void RequireVectorFormat(const ArgParser& p, const std::string& path, const std::string& format);
+
+// -of for a city model output (CityGML, CityJSON, CityJSONSeq or a GDAL
+// vector driver), or the extension of `path` when `format` is empty.
+void RequireCityModelFormat(const ArgParser& p, const std::string& path, const std::string& format);
+
+}  // namespace roofsweep::cli
