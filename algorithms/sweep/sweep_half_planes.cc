@@ -156,11 +156,22 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   const double step = o.coarse_step_deg * kDeg;
   const int samples = std::max(2, static_cast<int>(std::floor((t_max - t_min) / step + 1e-9)) + 1);
   hp.profile.resize(samples);
+  // The coarse sweep only has to find the peak's bracket: an even subset of
+  // the points does (Sim is a mean over points), at a fraction of the cost.
+  const int n_points = sim.PointCount();
+  if (o.coarse_max_points > 0 && n_points > o.coarse_max_points) {
+    std::vector<bool> subset(n_points, false);
+    for (int k = 0; k < o.coarse_max_points; ++k)
+      subset[static_cast<size_t>(static_cast<long long>(k) * n_points / o.coarse_max_points)] =
+          true;
+    sim.SetActive(subset);
+  }
   int k0 = 0;
   for (int k = 0; k < samples; ++k) {
     hp.profile[k] = sim.Evaluate(t_min + k * step);
     if (hp.profile[k] > hp.profile[k0]) k0 = k;
   }
+  sim.SetActive(std::vector<bool>(n_points, true));
   double theta = t_min + k0 * step;
 
   // Outsiders (§3.4): points that do not correlate at the coarse maximum,

@@ -13,6 +13,9 @@ struct SweepOptions {
   // Parabolic refinement stops when the bracket half-width falls below this
   // (paper: "uncertainty less than 1 degree").
   double refine_tolerance_deg = 0.5;
+  // The coarse sweep uses at most this many of a side's points (an even
+  // subset; 0: all); outlier removal, refinement and the acceptance use all.
+  int coarse_max_points = 80;
 
   // Acceptance (paper, figure 5): Sim(theta*) >= min_similarity and
   // |Sim''(theta*)| >= min_curvature, with Sim'' per radian squared (the

@@ -123,8 +123,23 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   }
 
   t0 = Clock::now();
+  // Lines on or near the ground (road markings, wall feet, shadows) bound
+  // no roof plane: sweeping them costs half the time and yields planes the
+  // assembly rejects anyway. Without a ground model everything is swept.
   std::vector<SweepLine> lines;
+  int near_ground = 0;
+  const double min_line_height = 0.5 * r.assembly.min_height_m;
   for (const Line3D& l : matched.lines) {
+    if (block.ground.Known()) {
+      const Eigen::Vector3d& a = l.segment.a;
+      const Eigen::Vector3d& b = l.segment.b;
+      const double ha = a.z() - block.ground.HeightAt(a.x(), a.y());
+      const double hb = b.z() - block.ground.HeightAt(b.x(), b.y());
+      if (std::max(ha, hb) < min_line_height) {
+        ++near_ground;
+        continue;
+      }
+    }
     SweepLine s{l.segment, {}};
     for (const auto& [v, seg] : l.observations) s.views.push_back(v);
     lines.push_back(std::move(s));
@@ -133,8 +148,10 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   const std::vector<HalfPlane> hps = SweepHalfPlanes(block, images, lines, r.sweep, sweep_progress);
   out.sides = static_cast<int>(hps.size());
   for (const HalfPlane& h : hps) out.accepted += h.accepted;
-  out.stages.push_back(
-      {"half-plane sweep", Str("%d sides, %d accepted", out.sides, out.accepted), Since(t0)});
+  out.stages.push_back({"half-plane sweep",
+                        Str("%d sides, %d accepted (%d lines near the ground)", out.sides,
+                            out.accepted, near_ground),
+                        Since(t0)});
 
   const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
   if (!half_plane_path.empty()) {
