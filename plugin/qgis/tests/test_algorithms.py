@@ -321,12 +321,18 @@ def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path
     if not has_command(roofsweep_exe, "run"):
         pytest.skip("roofsweep run is not available in this build ({}): the 'run' subcommand is missing, "
                     "so Reconstruct LoD2 buildings cannot be tested".format(roofsweep_exe))
-    res, _ = tiny_block
+    # The sweep compares a reference view with at least two others: the
+    # 2-view tiny block cannot give a roof plane, four views of it can.
+    sim = processing.run("roofsweep:simulate", dict(TINY, VIEWS=4, OUTPUT=str(tmp_path / "block4")),
+                         feedback=RecordingFeedback())
     out = str(tmp_path / "buildings.gpkg")
     fb = RecordingFeedback()
-    rec = processing.run("roofsweep:run", {"BLOCK": res["BLOCK"], "OUTPUT": out}, feedback=fb)
+    rec = processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out}, feedback=fb)
     assert os.path.isfile(out)
     names = [u.split("layername=")[1] for u in rec["LAYERS"]]
     assert "buildings" in names and "roof_surfaces" in names
     lyr = QgsVectorLayer(out + "|layername=buildings", "b", "ogr")
     assert lyr.isValid() and QgsWkbTypes.hasZ(lyr.wkbType()) and lyr.featureCount() > 0
+    assert _horizontal_epsg(lyr.crs()) == ("EPSG", "25832"), lyr.crs().toWkt()
+    roofs = QgsVectorLayer(out + "|layername=roof_surfaces", "r", "ogr")
+    assert roofs.isValid() and QgsWkbTypes.hasZ(roofs.wkbType()) and roofs.featureCount() > 0
