@@ -17,6 +17,7 @@
 #include "algorithms/core/error.h"
 #include "algorithms/edges/extract_segments.h"
 #include "algorithms/matching/assignment.h"
+#include "algorithms/matching/colour_balance.h"
 #include "algorithms/matching/correlation.h"
 #include "algorithms/matching/epipolar.h"
 #include "algorithms/matching/line_triangulation.h"
@@ -168,9 +169,13 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
 
   t0 = std::chrono::steady_clock::now();
   ReportOrCancel(progress, 0.2, "flanking regions");
+  std::vector<ColourCorrection> balance(nv);
+  if (o.colour_balance) balance = EstimateColourBalance(block, images);
   std::vector<ViewFeatures> views(nv);
-  tbb::parallel_for(
-      0, nv, [&](int v) { views[v] = PrepareView(block, v, images[v], res.segments[v], o); });
+  tbb::parallel_for(0, nv, [&](int v) {
+    views[v] =
+        PrepareView(block, v, ApplyColourCorrection(images[v], balance[v]), res.segments[v], o);
+  });
   res.timings.features_s = Seconds(t0);
 
   std::vector<std::vector<std::vector<int>>> labels;
@@ -230,21 +235,28 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       std::mt19937 rng(o.seed + static_cast<unsigned>(i * 1000 + j));
       std::shuffle(with.begin(), with.end(), rng);
       with.resize(std::min<size_t>(with.size(), static_cast<size_t>(o.init_segments)));
-      // Per random segment, the most similar candidate side: the obviously
-      // wrong combinations are left out by keeping only the best one, which
-      // is the correct match for most segments (see InitThresholds).
+      // Per random segment, the candidate side that correlates best in a*b*
+      // (§3.4's measure, which is blind to the statistics being calibrated):
+      // most such pairs are correct, so the median of their statistics
+      // describes correct pairs. (Taking the candidate with the smallest
+      // statistics instead picks the minimum over many candidates and gave
+      // thresholds that rejected 60 % of the correct pairs.)
       std::vector<std::pair<double, double>> stats;
       for (int s : with) {
-        double bm = 1e300, bc = 1e300;
-        for (const PairHypothesis& h : cand[s])
+        double best_h = o.init_min_correlation, bm = -1, bc = -1;
+        for (PairHypothesis h : cand[s])
           for (int side = 0; side < 2; ++side) {
             const SideColour& a = views[i].sides[s][side];
             const SideColour& b = views[j].sides[h.sj][side_j(h, side)];
             if (!a.valid || !b.valid) continue;
-            bm = std::min(bm, MeanStatistic(a, b, o.max_test_pixels));
-            bc = std::min(bc, CovStatistic(a, b, o.max_test_pixels));
+            const double hc = SideCorrelation(views[i], views[j], g, h, side, o);
+            if (hc > best_h) {
+              best_h = hc;
+              bm = MeanStatistic(a, b, o.max_test_pixels);
+              bc = CovStatistic(a, b, o.max_test_pixels);
+            }
           }
-        if (bm < 1e299) stats.emplace_back(bm, bc);
+        if (bm >= 0) stats.emplace_back(bm, bc);
       }
       thr = InitThresholds(stats, o.threshold_factor);
     }
@@ -343,7 +355,11 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     }
     // A detected segment counts fully, a gradient without a segment half.
     const double support = supporting + 0.5 * gradient_only;
-    accepted[n] = seeing == 0 || (supporting >= o.min_support_segments &&
+    // Trifocal-style verification: every further view that sees the
+    // hypothesis is a chance to refute it, so the support needed grows with
+    // them (at least min_support_segments detected segments, or all of the
+    // seeing views when fewer see it).
+    accepted[n] = seeing == 0 || (supporting >= std::min(o.min_support_segments, seeing) &&
                                   support >= std::max(1.0, o.min_support_fraction * seeing));
     vh.h.score += static_cast<double>(vh.support.size());
   });

@@ -22,6 +22,10 @@ struct MatchOptions {
   double min_common_length = 10.0;
 
   // ---- chromatic attributes (§3.2)
+  // Balance the colours of the views against each other before the L*a*b*
+  // conversion (per-view gain and offset per channel from the overlaps, see
+  // colour_balance.h): flight lines differ in colour calibration.
+  bool colour_balance = true;
   double region_offset = 1.0;  // px between the segment and its flanking region
   double region_width = 10.0;  // px
   // L* outliers: farther than this many robust standard deviations from the
@@ -36,7 +40,10 @@ struct MatchOptions {
   // significance 0.001 (chi2 quantiles 13.82 for 2 dof, 16.27 for 3 dof).
   double mean_threshold = -1;
   double cov_threshold = -1;
-  int init_segments = 30;
+  int init_segments = 60;
+  // Initialisation pairs: per random segment the candidate side with the
+  // highest a*b* correlation, when above this (see MatchLines).
+  double init_min_correlation = 0.5;
   // The median alone would reject half of the correct pairs; the factor
   // turns it into a threshold (measured on the simulated blocks, see report).
   double threshold_factor = 8.0;
@@ -68,7 +75,7 @@ struct MatchOptions {
   // (a detected segment counts 1, a gradient without a segment 0.5), and the
   // least number of other views with a supporting segment (when any sees it).
   double min_support_fraction = 0.5;
-  int min_support_segments = 1;
+  int min_support_segments = 2;
   // Projections shorter than this in a view do not count as seeing it.
   double verify_min_length = 10.0;
 
