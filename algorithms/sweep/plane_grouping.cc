@@ -56,6 +56,9 @@ std::string Fmt(const char* fmt, int a, int b, double c) {
 
 std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& h,
                                             double min_extent_m) {
+  // The sweep's own evidence when it has enough of it: a strip would run
+  // past the eaves along a hip or over a neighbour's roof.
+  if (h.support.size() >= 3 && h.extent_m >= min_extent_m) return h.support;
   const auto family = HalfPlaneFamily::Make(line.segment, h.side);
   if (!family) return {};
   const Eigen::Vector3d w = family->Direction(h.theta_deg * kDeg);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
 #include "algorithms/geometry/view.h"
 #include "algorithms/sweep/half_plane_family.h"
@@ -60,12 +61,13 @@ std::vector<Segment2> Blockers(const std::vector<std::vector<Projected>>& projec
 // that a few points correlating by chance beyond the face do not stretch it.
 double FaceExtent(const Camera& camera, const Pose& pose, const HalfPlaneFamily& family,
                   double theta, const SideSimilarity& sim, const std::vector<BandPoint>& points,
-                  const SweepOptions& o) {
+                  const SweepOptions& o, std::vector<Eigen::Vector2d>* support) {
   std::vector<double> score;
   sim.Evaluate(theta, &score);
   const Eigen::Vector4d plane = family.Plane(theta);
   const Eigen::Vector3d w = family.Direction(theta);
   std::vector<double> reach;
+  std::vector<Eigen::Vector3d> lifted;
   for (size_t i = 0; i < points.size() && i < score.size(); ++i) {
     if (score[i] < o.extent_min_score) continue;
     const Ray ray = BackProject(camera, pose, points[i].pixel);
@@ -75,12 +77,19 @@ double FaceExtent(const Camera& camera, const Pose& pose, const HalfPlaneFamily&
     if (t <= 0) continue;
     const Eigen::Vector3d x = ray.origin + t * ray.direction;
     reach.push_back(std::max(0.0, (x - family.line().a).dot(w)));
+    lifted.push_back(x);
   }
   if (reach.empty()) return 0.0;
-  const size_t k =
-      std::min(reach.size() - 1, static_cast<size_t>(o.extent_quantile * (reach.size() - 1) + 0.5));
-  std::nth_element(reach.begin(), reach.begin() + k, reach.end());
-  return reach[k];
+  std::vector<double> sorted = reach;
+  const size_t k = std::min(sorted.size() - 1,
+                            static_cast<size_t>(o.extent_quantile * (sorted.size() - 1) + 0.5));
+  std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+  const double extent = sorted[k];
+  std::vector<Eigen::Vector2d> plan = {family.line().a.head<2>(), family.line().b.head<2>()};
+  for (size_t i = 0; i < lifted.size(); ++i)
+    if (reach[i] <= extent) plan.push_back(lifted[i].head<2>());
+  *support = ConvexHull(std::move(plan));
+  return extent;
 }
 
 HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures,
@@ -225,9 +234,9 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   hp.curvature = (eval(theta - hc) - 2 * hp.similarity + eval(theta + hc)) / (hc * hc);
   hp.theta_deg = theta / kDeg;
   hp.plane = family->Plane(theta);
-  hp.extent_m =
-      FaceExtent(block.CameraOf(block.views[hp.reference_view]),
-                 block.views[hp.reference_view].pose, *family, theta, sim, best_points, o);
+  hp.extent_m = FaceExtent(block.CameraOf(block.views[hp.reference_view]),
+                           block.views[hp.reference_view].pose, *family, theta, sim, best_points, o,
+                           &hp.support);
 
   if (hp.views < o.min_views) {
     hp.reason = Format("too few views (%.0f < %.0f)", hp.views, o.min_views);

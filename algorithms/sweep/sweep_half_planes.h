@@ -41,6 +41,10 @@ struct HalfPlane {
   // the band width). 0 when unknown. Grouping and delineation (§4, §5) use
   // it as the half-plane's first extent.
   double extent_m = 0;
+  // Plan view (x, y) outline of the same evidence: the convex hull of the
+  // line's end points and the correlating points within extent_m, lifted
+  // onto the plane. Empty when there were no such points.
+  std::vector<Eigen::Vector2d> support;
   bool accepted = false;
   std::string reason;  // why not accepted; empty when accepted
   // Sim at the coarse samples theta_min, theta_min + step, ... (all points

@@ -16,6 +16,7 @@
 #include "algorithms/sweep/sweep_half_planes.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/ogr_citymodel.h"
+#include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/image_io.h"
 #include "io/core/local_frame.h"
@@ -99,13 +100,30 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
 
   // Lines and matching: 0 .. 35 %; sweep: 35 .. 95 %.
   t0 = Clock::now();
-  SubProgress match_progress(progress, 0.0, 0.35);
-  const MatchResult matched = MatchLines(block, images, r.match, r.edges, match_progress, nullptr);
-  out.messages = matched.messages;
+  MatchResult matched;
+  if (r.lines_in.empty()) {
+    SubProgress match_progress(progress, 0.0, 0.35);
+    matched = MatchLines(block, images, r.match, r.edges, match_progress, nullptr);
+    out.messages = matched.messages;
+    out.stages.push_back(
+        {"segments + 3D lines",
+         Str("%lld segments, %zu 3D lines", matched.funnel.segments, matched.lines.size()),
+         Since(t0)});
+  } else {
+    const SegmentSet given = ReadSegments(r.lines_in);
+    if (!given.crs.empty() && !manifest.crs.empty() && given.crs != manifest.crs)
+      out.messages.push_back("Warning: " + r.lines_in + " is in " + given.crs + ", the block in " +
+                             manifest.crs + "; read as block coordinates");
+    for (const LabelledSegment& s : given.segments) {
+      Line3D l;
+      l.segment = {frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)};
+      matched.lines.push_back(std::move(l));
+    }
+    out.stages.push_back({"3D lines read",
+                          Str("%zu 3D lines from %s", matched.lines.size(), r.lines_in.c_str()),
+                          Since(t0)});
+  }
   out.lines = static_cast<int>(matched.lines.size());
-  out.stages.push_back({"segments + 3D lines",
-                        Str("%lld segments, %d 3D lines", matched.funnel.segments, out.lines),
-                        Since(t0)});
   if (!r.lines3d.empty()) {
     std::vector<LayerFeature> features;
     for (const Line3D& l : matched.lines) {

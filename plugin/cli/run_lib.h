@@ -18,9 +18,13 @@ struct RunRequest {
   std::string format;  // empty: from the extension
   bool overwrite = false;
   bool stop_after_sweep = false;  // `roofsweep sweep`: write the half-planes, no buildings
-  std::string lines3d;            // optional: also write the 3D lines (OGR layer lines3d)
-  std::string half_planes;        // optional: also write the half-planes (OGR layer half_planes)
-  std::string report;             // optional: JSON with the stage table and every rejection
+  // Optional 3D lines to start from instead of matching (an OGR line layer
+  // such as `match` writes, or a segments JSON; block CRS): lines from
+  // another tool, or the simulator's true edges to judge the later stages.
+  std::string lines_in;
+  std::string lines3d;      // optional: also write the 3D lines (OGR layer lines3d)
+  std::string half_planes;  // optional: also write the half-planes (OGR layer half_planes)
+  std::string report;       // optional: JSON with the stage table and every rejection
   EdgeOptions edges;
   MatchOptions match;
   SweepOptions sweep;
