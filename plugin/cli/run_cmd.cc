@@ -33,6 +33,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-o", &r.output, "FILE", "LoD2 output (.gml, .city.json, .city.jsonl, .gpkg, ...)")
       .Option("-of|-f", &r.format, "FORMAT", "CityGML, CityJSON, CityJSONSeq or a GDAL driver")
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
+      .Option("-t_srs", &r.target_crs, "SRS", "reproject the LoD2 output to SRS (PROJ)")
       .Option("-lines", &r.lines_in, "FILE",
               "start from these 3D lines (OGR line layer or segments JSON) instead of matching")
       .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")

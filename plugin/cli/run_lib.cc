@@ -16,6 +16,7 @@
 #include "algorithms/sweep/sweep_half_planes.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/ogr_citymodel.h"
+#include "io/citymodel/reproject.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/image_io.h"
@@ -237,6 +238,13 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   CityModel model = std::move(assembled.model);
   model.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
   model.crs = manifest.crs;
+  // The solids were checked in metres by the assembly; reprojecting to
+  // degrees afterwards keeps them closed and planar in the target CRS's terms.
+  if (!r.target_crs.empty()) {
+    if (model.crs.empty())
+      throw Error(r.block + ": the block has no CRS to reproject from (-t_srs)");
+    ReprojectCityModel(model, r.target_crs);
+  }
   WriteOptions wo;
   wo.format = r.format;
   wo.overwrite = r.overwrite;

@@ -25,6 +25,7 @@ struct RunRequest {
   std::string lines3d;      // optional: also write the 3D lines (OGR layer lines3d)
   std::string half_planes;  // optional: also write the half-planes (OGR layer half_planes)
   std::string report;       // optional: JSON with the stage table and every rejection
+  std::string target_crs;   // optional: reproject the LoD2 output (PROJ), -t_srs
   EdgeOptions edges;
   MatchOptions match;
   SweepOptions sweep;

@@ -51,6 +51,18 @@ test_run_is_deterministic() {
     || fail run_deterministic "two runs differ"
 }
 
+test_run_reprojects_with_t_srs() {
+  small_block || return
+  expect_ok run_t_srs run "$SIM" -o "$WORK/w.city.json" -t_srs EPSG:4979 -q
+  python3 - "$WORK/w.city.json" <<'PY' && pass run_t_srs_crs || fail run_t_srs_crs "not EPSG:4979 degrees"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["metadata"]["referenceSystem"].endswith("/EPSG/0/4979"), d["metadata"]
+x, y = d["transform"]["translate"][:2]
+assert -180 <= x <= 180 and -90 <= y <= 90, (x, y)
+PY
+}
+
 test_sweep_writes_half_planes() {
   small_block || return
   expect_ok sweep_gpkg sweep "$SIM" -o "$WORK/s.gpkg"
