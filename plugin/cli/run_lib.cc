@@ -224,9 +224,29 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       {"grouping into planes",
        Str("%d planes, %zu dropped in conflicts", out.planes, grouped.rejected.size()), Since(t0)});
 
+  // §5 verification: every plane's patch against all views that see it.
   t0 = Clock::now();
-  AssemblyResult assembled =
-      AssembleBuildings(ToRoofPlanes(grouped.planes), block.ground, r.assembly);
+  std::vector<RoofPlaneHypothesis> roof_planes = ToRoofPlanes(grouped.planes);
+  {
+    SubProgress verify_progress(progress, 0.95, 0.99);
+    const std::vector<PlaneVerification> checks =
+        VerifyPlanes(block, images, roof_planes, r.verify, verify_progress);
+    std::vector<RoofPlaneHypothesis> verified;
+    for (size_t i = 0; i < roof_planes.size(); ++i) {
+      if (!checks[i].accepted) {
+        out.rejected.push_back(roof_planes[i].id + ": " + checks[i].reason);
+        continue;
+      }
+      verified.push_back(std::move(roof_planes[i]));
+    }
+    out.stages.push_back({"verification",
+                          Str("%zu of %zu planes confirmed", verified.size(), roof_planes.size()),
+                          Since(t0)});
+    roof_planes = std::move(verified);
+  }
+
+  t0 = Clock::now();
+  AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   out.buildings = static_cast<int>(assembled.model.buildings.size());
   out.stages.push_back({"LoD2 buildings",

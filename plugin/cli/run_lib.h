@@ -9,6 +9,7 @@
 #include "algorithms/matching/match_options.h"
 #include "algorithms/sweep/plane_grouping.h"
 #include "algorithms/sweep/sweep_options.h"
+#include "algorithms/sweep/verify_planes.h"
 
 namespace roofsweep {
 
@@ -30,6 +31,7 @@ struct RunRequest {
   MatchOptions match;
   SweepOptions sweep;
   GroupingOptions grouping;
+  VerifyOptions verify;
   AssemblyOptions assembly;
 };
 

@@ -1,0 +1,200 @@
+#include "algorithms/sweep/verify_planes.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+#include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/geometry/view.h"
+#include "algorithms/sweep/side_similarity.h"
+
+namespace roofsweep {
+namespace {
+
+bool InsideConvexRing(const std::vector<Eigen::Vector2d>& r, const Eigen::Vector2d& p) {
+  const size_t n = r.size();
+  if (n < 3) return false;
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& a = r[i];
+    const Eigen::Vector2d& b = r[(i + 1) % n];
+    if ((b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x()) < 0) return false;
+  }
+  return true;
+}
+
+double PlaneZ(const Eigen::Vector4d& pl, double x, double y) {
+  return -(pl[0] * x + pl[1] * y + pl[3]) / pl[2];
+}
+
+// Lifts a reference pixel onto the plane.
+bool OnPlane(const Camera& cam, const Pose& pose, const Eigen::Vector4d& pl,
+             const Eigen::Vector2d& px, Eigen::Vector3d* x) {
+  const Ray ray = BackProject(cam, pose, px);
+  const double d = pl.head<3>().dot(ray.direction);
+  if (std::abs(d) < 1e-9) return false;
+  const double t = -(pl.head<3>().dot(ray.origin) + pl[3]) / d;
+  if (t <= 0) return false;
+  *x = ray.origin + t * ray.direction;
+  return true;
+}
+
+struct Scores {
+  double sum = 0;
+  int n = 0;
+};
+
+// Mean Cor+ of the samples for one plane; samples whose reference window
+// is flat are skipped.
+Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
+                  const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector4d& pl,
+                  const VerifyOptions& o) {
+  Scores s;
+  const int r = o.ncc_radius, w = 2 * r + 1;
+  const int n_views = static_cast<int>(block.views.size());
+  std::vector<float> ref(w * w), other(w * w);
+  for (const Eigen::Vector3d& X0 : samples) {
+    const Eigen::Vector3d X(X0.x(), X0.y(), PlaneZ(pl, X0.x(), X0.y()));
+    // Reference: the view whose centre is nearest in plan (least
+    // perspective distortion of the roof).
+    std::vector<std::pair<int, Eigen::Vector2d>> seen;
+    int refv = -1;
+    double best = std::numeric_limits<double>::infinity();
+    for (int v = 0; v < n_views; ++v) {
+      const View& view = block.views[v];
+      const Camera& cam = block.CameraOf(view);
+      const auto p = Project(cam, view.pose, X);
+      const double m = r + 2;
+      if (!p || p->x() < m || p->y() < m || p->x() > cam.width - m || p->y() > cam.height - m)
+        continue;
+      seen.emplace_back(v, *p);
+      const double d = (view.pose.C - X).head<2>().norm();
+      if (d < best) best = d, refv = static_cast<int>(seen.size()) - 1;
+    }
+    if (seen.size() < 2) continue;
+    const int rv = seen[refv].first;
+    const Camera& rcam = block.CameraOf(block.views[rv]);
+    const Pose& rpose = block.views[rv].pose;
+    // The window's pixels lifted onto the plane once, reused for every view.
+    std::vector<Eigen::Vector3d> lifted(w * w);
+    bool ok = true;
+    double mean = 0;
+    for (int dy = -r, k = 0; dy <= r && ok; ++dy)
+      for (int dx = -r; dx <= r; ++dx, ++k) {
+        const Eigen::Vector2d px = seen[refv].second + Eigen::Vector2d(dx, dy);
+        float val;
+        ok = ok && OnPlane(rcam, rpose, pl, px, &lifted[k]) &&
+             SampleBilinear(grey[rv], px.x() - 0.5, px.y() - 0.5, &val);
+        if (!ok) break;
+        ref[k] = val;
+        mean += val;
+      }
+    if (!ok) continue;
+    mean /= w * w;
+    double var = 0;
+    for (float& v : ref) v -= static_cast<float>(mean), var += v * v;
+    if (std::sqrt(var / (w * w)) < o.min_texture) continue;
+    double point_sum = 0;
+    int point_n = 0;
+    for (size_t i = 0; i < seen.size(); ++i) {
+      if (static_cast<int>(i) == refv) continue;
+      const int v = seen[i].first;
+      const Camera& cam = block.CameraOf(block.views[v]);
+      const Pose& pose = block.views[v].pose;
+      double m2 = 0;
+      bool inside = true;
+      for (int k = 0; k < w * w && inside; ++k) {
+        const auto p = Project(cam, pose, lifted[k]);
+        float val;
+        inside = p && SampleBilinear(grey[v], p->x() - 0.5, p->y() - 0.5, &val);
+        if (inside) other[k] = val, m2 += val;
+      }
+      if (!inside) continue;
+      m2 /= w * w;
+      double sxy = 0, syy = 0;
+      for (int k = 0; k < w * w; ++k) {
+        const double b = other[k] - m2;
+        sxy += ref[k] * b;
+        syy += b * b;
+      }
+      const double ncc = (var > 0 && syy > 0) ? sxy / std::sqrt(var * syy) : 0.0;
+      point_sum += std::max(0.0, ncc);
+      ++point_n;
+    }
+    if (point_n == 0) continue;
+    s.sum += point_sum / point_n;
+    ++s.n;
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                            const std::vector<RoofPlaneHypothesis>& planes,
+                                            const VerifyOptions& o, Progress& progress) {
+  std::vector<cv::Mat> grey(images.size());
+  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
+    if (images[v].channels() == 3)
+      cv::cvtColor(images[v], grey[v], cv::COLOR_RGB2GRAY);
+    else
+      grey[v] = images[v];
+  });
+  std::vector<PlaneVerification> out(planes.size());
+  ReportOrCancel(progress, 0.0, "verifying planes");
+  tbb::parallel_for(size_t{0}, planes.size(), [&](size_t i) {
+    const RoofPlaneHypothesis& p = planes[i];
+    PlaneVerification& v = out[i];
+    if (p.patch.size() < 3 || !(std::abs(p.plane[2]) > 1e-3)) {
+      v.reason = "degenerate patch";
+      return;
+    }
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const auto& q : p.patch)
+      x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
+      y1 = std::max(y1, q.y());
+    std::vector<Eigen::Vector3d> samples;
+    for (double y = y0 + 0.5 * o.spacing_m; y < y1; y += o.spacing_m)
+      for (double x = x0 + 0.5 * o.spacing_m; x < x1; x += o.spacing_m)
+        if (InsideConvexRing(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
+    const Scores at = ScorePlane(block, grey, samples, p.plane, o);
+    v.samples = at.n;
+    if (at.n < o.min_samples) {
+      v.score = std::numeric_limits<double>::quiet_NaN();
+      char buf[120];
+      std::snprintf(buf, sizeof buf, "cannot be verified: %d textured samples < %d", at.n,
+                    o.min_samples);
+      v.reason = buf;
+      return;
+    }
+    v.score = at.sum / at.n;
+    Eigen::Vector4d below = p.plane, above = p.plane;
+    // z = -(a x + b y + d) / c: moving z by +h changes d by -c h.
+    below[3] += p.plane[2] * o.height_offset_m;
+    above[3] -= p.plane[2] * o.height_offset_m;
+    const Scores lo = ScorePlane(block, grey, samples, below, o);
+    const Scores hi = ScorePlane(block, grey, samples, above, o);
+    v.score_below = lo.n ? lo.sum / lo.n : 0.0;
+    v.score_above = hi.n ? hi.sum / hi.n : 0.0;
+    char buf[200];
+    if (v.score < o.min_score) {
+      std::snprintf(buf, sizeof buf, "photometric score %.2f < %.2f over %d samples", v.score,
+                    o.min_score, v.samples);
+      v.reason = buf;
+    } else if (v.score < std::max(v.score_below, v.score_above) + o.min_margin) {
+      std::snprintf(buf, sizeof buf,
+                    "height not confirmed: score %.2f, %.1f m %s %.2f (margin %.2f needed)",
+                    v.score, o.height_offset_m, v.score_below > v.score_above ? "lower" : "higher",
+                    std::max(v.score_below, v.score_above), o.min_margin);
+      v.reason = buf;
+    } else {
+      v.accepted = true;
+    }
+  });
+  return out;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/core/progress.h"
+#include "algorithms/geometry/block.h"
+
+namespace roofsweep {
+
+// Options of the photometric verification of plane patches (Baillard &
+// Zisserman 2000, §5: "patch verification over all views by correlation").
+struct VerifyOptions {
+  // Samples on a plan-view grid of this spacing (m) inside the patch.
+  double spacing_m = 0.5;
+  // Correlation window (2 r + 1)^2 in the reference view, mapped pixel by
+  // pixel through the plane into the other views (exact plane-induced
+  // mapping, as in the sweep).
+  int ncc_radius = 3;
+  // Windows flatter than this grey standard deviation ([0, 1] scale) carry
+  // no evidence and are skipped.
+  double min_texture = 0.01;
+  // A patch with fewer textured samples cannot be verified and is
+  // rejected (its score is reported as NaN): the sweep's evidence lies
+  // along the line, a roof face needs its own.
+  int min_samples = 8;
+  // Accept when the mean Cor+ over the samples reaches min_score and
+  // exceeds by min_margin the score of the same plane moved up and down by
+  // height_offset_m: the images must clearly prefer this height. Rough
+  // surfaces (tree crowns, hedges) correlate about equally well over a
+  // range of heights; roofs do not.
+  double min_score = 0.3;
+  double height_offset_m = 1.0;
+  double min_margin = 0.1;
+};
+
+struct PlaneVerification {
+  double score = 0;  // mean Cor+ at the plane; NaN when unverifiable
+  double score_below = 0, score_above = 0;
+  int samples = 0;  // textured samples used
+  bool accepted = false;
+  std::string reason;  // why not accepted
+};
+
+// Scores every patch over all views that see it. `images` as SweepHalfPlanes
+// takes them. Parallel over planes (TBB), deterministic. Cancels through
+// `progress`.
+std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                            const std::vector<RoofPlaneHypothesis>& planes,
+                                            const VerifyOptions& options, Progress& progress);
+
+}  // namespace roofsweep
