@@ -192,6 +192,11 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
       res.rejected.push_back(name(i) + ": degenerate plane or patch");
       continue;
     }
+    if (p.longest_line_m < o.min_line_length_m) {
+      res.rejected.push_back(name(i) + Fmt(": longest supporting line %.2f m < %.2f m",
+                                           p.longest_line_m, o.min_line_length_m));
+      continue;
+    }
     const double slope = std::acos(std::clamp(nrm.z(), -1.0, 1.0)) / kDeg;
     if (slope > o.max_roof_slope_deg) {
       res.rejected.push_back(

@@ -17,6 +17,7 @@ struct RoofPlaneHypothesis {
   std::vector<Eigen::Vector2d> patch;  // convex, counter-clockwise seen from above (x, y)
   double score = 0;                    // reliability (larger is better)
   int lines = 0;                       // supporting 3D lines
+  double longest_line_m = 0;           // length of the longest of them
   double similarity = 0;               // mean Sim of its half-planes
   std::string id;                      // for the log ("plane 12")
 };
@@ -28,6 +29,12 @@ struct AssemblyOptions {
   // A roof plane must lie at least this high above the ground at its patch
   // centre (lower planes are ground, cars, hedges).
   double min_height_m = 2.5;
+  // A roof face is bounded by straight edges: a plane whose longest
+  // supporting 3D line is shorter than this is dropped. Tree crowns, roof
+  // furniture and shadows give only short lines (on the `realistic` block
+  // 3 m kept plane completeness and raised correctness from 68 % to 88 %);
+  // the cost is garden sheds under 3 m, below the 6 m buildings.
+  double min_line_length_m = 3.0;
   // Two patches belong to one building when they come within adjacency_gap_m
   // of each other in plan view and their planes meet there (height
   // difference below max_step_m): a lower neighbour across a party wall is a
@@ -41,7 +48,7 @@ struct AssemblyOptions {
   double min_face_area_m2 = 1.0;
   double min_support = 0.3;
   // Buildings whose outline is smaller than this are logged and dropped.
-  double min_footprint_m2 = 15.0;
+  double min_footprint_m2 = 5.0;
   // Vertices closer than this are welded so that neighbouring faces share
   // them exactly.
   double weld_m = 1e-3;

@@ -24,6 +24,7 @@ RoofPlaneHypothesis Hyp(const Eigen::Vector4d& plane, Ring2 patch, double score 
   h.patch = ConvexHull(std::move(patch));
   h.score = score;
   h.lines = 2;
+  h.longest_line_m = 10;
   h.similarity = 0.5;
   return h;
 }
@@ -125,13 +126,17 @@ TEST(AssembleBuildings, EveryRejectionHasAReason) {
   RoofPlaneHypothesis bad = Hyp(Eigen::Vector4d(0, 0, 1, -6), {{80, 0}, {82, 0}, {82, 2}});
   bad.plane[2] = std::nan("");
   in.push_back(bad);
+  RoofPlaneHypothesis crown = Hyp(Eigen::Vector4d(0, 0, 1, -6), {{90, 0}, {95, 0}, {95, 5}});
+  crown.longest_line_m = 1.2;  // a tree crown's short lines
+  in.push_back(crown);
   const AssemblyResult r = AssembleBuildings(in, Flat(0));
   EXPECT_TRUE(r.model.buildings.empty());
-  ASSERT_EQ(r.rejected.size(), 4u);
+  ASSERT_EQ(r.rejected.size(), 5u);
+  EXPECT_NE(r.rejected[3].find("longest supporting line"), std::string::npos) << r.rejected[3];
   EXPECT_NE(r.rejected[0].find("above the ground"), std::string::npos) << r.rejected[0];
   EXPECT_NE(r.rejected[1].find("slope"), std::string::npos) << r.rejected[1];
   EXPECT_NE(r.rejected[2].find("degenerate"), std::string::npos) << r.rejected[2];
-  EXPECT_NE(r.rejected[3].find("footprint"), std::string::npos) << r.rejected[3];
+  EXPECT_NE(r.rejected[4].find("footprint"), std::string::npos) << r.rejected[4];
 }
 
 TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {

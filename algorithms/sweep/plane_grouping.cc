@@ -15,8 +15,9 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 
 double Reliability(const HalfPlane& h) {
-  // Both of the paper's indicators: a high, sharp maximum.
-  return h.similarity * std::min(1.0, -h.curvature / 8.0);
+  // Both of the paper's indicators: a high, sharp maximum; half-planes
+  // passing the paper's own test come first.
+  return (h.accepted ? 1.0 : 0.0) + h.similarity * std::min(1.0, -h.curvature / 8.0);
 }
 
 double Distance(const Eigen::Vector4d& plane, const Eigen::Vector3d& x) {
@@ -46,12 +47,6 @@ Eigen::Vector4d FitPlane(const std::vector<WeightedPoint>& pts, const Eigen::Vec
   return {n.x(), n.y(), n.z(), -n.dot(c)};
 }
 
-std::string Fmt(const char* fmt, int a, int b, double c) {
-  char buf[200];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c);
-  return buf;
-}
-
 }  // namespace
 
 std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& h,
@@ -72,7 +67,7 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
                                const std::vector<HalfPlane>& hps, const GroupingOptions& o) {
   std::vector<int> order;
   for (size_t i = 0; i < hps.size(); ++i)
-    if (hps[i].accepted && hps[i].line >= 0 && hps[i].line < static_cast<int>(lines.size()))
+    if (hps[i].candidate && hps[i].line >= 0 && hps[i].line < static_cast<int>(lines.size()))
       order.push_back(static_cast<int>(i));
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return Reliability(hps[a]) > Reliability(hps[b]); });
@@ -115,6 +110,7 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
     wk.g.half_planes.push_back(i);
     if (std::find(wk.g.lines.begin(), wk.g.lines.end(), h.line) == wk.g.lines.end())
       wk.g.lines.push_back(h.line);
+    wk.g.longest_line_m = std::max(wk.g.longest_line_m, line.segment.Length());
     // The lines are measurements; the far edge of the strip only keeps the
     // fit from degenerating when all lines are parallel and coplanar.
     wk.pts.push_back({line.segment.a, 1.0});
@@ -129,43 +125,49 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
     wk.g.score += std::abs(SignedArea(rect)) * h.similarity;
   }
 
-  // Conflict management: strongest first; a plane overlapping a stronger,
-  // kept one by too much is dropped.
-  std::vector<int> by_score(work.size());
+  GroupingResult out;
+  for (Work& w : work) out.planes.push_back(std::move(w.g));
+  return out;
+}
+
+std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
+                                          double max_overlap) {
+  std::vector<RoofPlaneHypothesis>& p = *planes;
+  std::vector<int> by_score(p.size());
   std::iota(by_score.begin(), by_score.end(), 0);
   std::stable_sort(by_score.begin(), by_score.end(),
-                   [&](int a, int b) { return work[a].g.score > work[b].g.score; });
-  GroupingResult out;
+                   [&](int a, int b) { return p[a].score > p[b].score; });
+  std::vector<std::string> rejected;
   std::vector<int> kept;
   for (int k : by_score) {
-    const PlaneGroup& g = work[k].g;
-    const double area = std::abs(SignedArea(g.patch));
+    const double area = std::abs(SignedArea(p[k].patch));
     int conflict = -1;
     double overlap = 0;
     for (int j : kept) {
-      const PlaneGroup& s = work[j].g;
-      const Ring2 inter = IntersectConvex(g.patch, s.patch);
+      const Ring2 inter = IntersectConvex(p[k].patch, p[j].patch);
       if (inter.empty()) continue;
       const double f = std::abs(SignedArea(inter)) /
-                       std::max(1e-9, std::min(area, std::abs(SignedArea(s.patch))));
-      if (f > o.max_overlap) {
+                       std::max(1e-9, std::min(area, std::abs(SignedArea(p[j].patch))));
+      if (f > max_overlap) {
         conflict = j;
         overlap = f;
         break;
       }
     }
     if (conflict >= 0) {
-      out.rejected.push_back(
-          Fmt("plane of line(s) %d: overlaps the stronger plane of line %d by "
-              "%.0f %% in plan view",
-              g.lines.front(), work[conflict].g.lines.front(), 100 * overlap));
+      char buf[300];
+      std::snprintf(buf, sizeof buf, "%s: overlaps the stronger %s by %.0f %% in plan view",
+                    p[k].id.c_str(), p[conflict].id.c_str(), 100 * overlap);
+      rejected.push_back(buf);
       continue;
     }
     kept.push_back(k);
   }
-  std::sort(kept.begin(), kept.end());  // back to reliability order
-  for (int k : kept) out.planes.push_back(std::move(work[k].g));
-  return out;
+  std::sort(kept.begin(), kept.end());
+  std::vector<RoofPlaneHypothesis> out;
+  for (int k : kept) out.push_back(std::move(p[k]));
+  p = std::move(out);
+  return rejected;
 }
 
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups) {
@@ -177,6 +179,7 @@ std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& gro
     h.patch = g.patch;
     h.score = g.score;
     h.lines = static_cast<int>(g.lines.size());
+    h.longest_line_m = g.longest_line_m;
     h.similarity = g.similarity;
     char buf[64];
     std::snprintf(buf, sizeof buf, "plane %zu (line %d)", k, g.lines.empty() ? -1 : g.lines[0]);

@@ -22,10 +22,10 @@ struct GroupingOptions {
   // A half-plane's patch is the strip from its line to the sweep's reach
   // (HalfPlane::extent_m), at least min_extent_m wide.
   double min_extent_m = 1.0;
-  // Conflict management (§5.2): two planes whose plan-view patches overlap
-  // by more than max_overlap of the smaller patch and that are not coplanar
-  // cannot both be roof; the one with the lower score (patch area x
-  // similarity) is dropped.
+  // Conflict management (§5, ResolveConflicts): two planes whose plan-view
+  // patches overlap by more than max_overlap of the smaller patch cannot
+  // both be roof (coplanar ones were merged by the grouping); the one with
+  // the lower score is dropped.
   double max_overlap = 0.5;
 };
 
@@ -34,25 +34,31 @@ struct PlaneGroup {
   Eigen::Vector4d plane = Eigen::Vector4d::Zero();  // n . X + d = 0, unit n, n_z >= 0
   std::vector<int> half_planes;                     // indices into the sweep's result
   std::vector<int> lines;                           // distinct input lines
-  std::vector<Eigen::Vector2d> patch;               // plan view, convex, counter-clockwise
-  double score = 0;                                 // sum of patch area x similarity
-  double similarity = 0;                            // mean Sim of the half-planes
+  double longest_line_m = 0;
+  std::vector<Eigen::Vector2d> patch;  // plan view, convex, counter-clockwise
+  double score = 0;                    // sum of patch area x similarity
+  double similarity = 0;               // mean Sim of the half-planes
 };
 
 struct GroupingResult {
   std::vector<PlaneGroup> planes;
-  std::vector<std::string> rejected;  // planes dropped by conflict management, with why
 };
 
-// Groups the accepted half-planes, most reliable first (Sim x curvature),
+// Groups the candidate half-planes, accepted ones first, then by
+// reliability (Sim x curvature),
 // into planes: a half-plane joins the first compatible plane (see
 // GroupingOptions), whose parameters are then refitted by orthogonal
 // regression over its lines' end points and the far edges of their
-// strips; otherwise it starts a new plane. Then conflicting planes are
-// resolved. Deterministic.
+// strips; otherwise it starts a new plane. Deterministic.
 GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
                                const std::vector<HalfPlane>& half_planes,
                                const GroupingOptions& options = {});
+
+// Conflict management: strongest first (RoofPlaneHypothesis::score, e.g.
+// patch area x verified photometric score), a plane whose patch overlaps a
+// kept one's by more than max_overlap is dropped. Returns the reasons.
+std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
+                                          double max_overlap);
 
 // The groups as the building assembly takes them.
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups);

@@ -26,6 +26,7 @@ HalfPlane Accepted(const std::vector<SweepLine>& lines, int line, int side,
   h.curvature = -10;
   h.extent_m = extent;
   h.accepted = true;
+  h.candidate = true;
   return h;
 }
 
@@ -46,6 +47,7 @@ TEST(PlaneGrouping, RidgeAndEavesBecomeTwoPlanes) {
       Accepted(g.lines, 1, +1, g.south, 3.0), Accepted(g.lines, 2, -1, g.north, 2.0)};
   HalfPlane rejected = hps[0];
   rejected.accepted = false;
+  rejected.candidate = false;
   rejected.line = 1;
   hps.push_back(rejected);
   const GroupingResult r = GroupHalfPlanes(g.lines, hps);
@@ -57,7 +59,6 @@ TEST(PlaneGrouping, RidgeAndEavesBecomeTwoPlanes) {
     // The two strips cover the 10 x 4 m face.
     EXPECT_NEAR(std::abs(SignedArea(p.patch)), 40.0, 1e-6);
   }
-  EXPECT_TRUE(r.rejected.empty());
   const std::vector<RoofPlaneHypothesis> roofs = ToRoofPlanes(r.planes);
   ASSERT_EQ(roofs.size(), 2u);
   EXPECT_EQ(roofs[0].lines, 2);
@@ -74,11 +75,16 @@ TEST(PlaneGrouping, FarApartCoplanarFacesStaySeparateAndConflictsResolve) {
       Accepted(lines, 0, -1, g.south, 4.0), Accepted(lines, 3, -1, g.south, 4.0),
       Accepted(lines, 1, +1, Eigen::Vector3d(0, -1, 1).normalized(), 3.5, 0.45)};
   const GroupingResult r = GroupHalfPlanes(lines, hps);
-  ASSERT_EQ(r.planes.size(), 2u);
+  ASSERT_EQ(r.planes.size(), 3u);
+  std::vector<RoofPlaneHypothesis> planes = ToRoofPlanes(r.planes);
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, 0.5);
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].lines, 1);
   EXPECT_EQ(r.planes[0].lines, std::vector<int>{0});
   EXPECT_EQ(r.planes[1].lines, std::vector<int>{3});
-  ASSERT_EQ(r.rejected.size(), 1u);
-  EXPECT_NE(r.rejected[0].find("overlaps"), std::string::npos);
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_NE(rejected[0].find("overlaps"), std::string::npos) << rejected[0];
+  EXPECT_NE(rejected[0].find("line 1"), std::string::npos) << rejected[0];
 }
 
 TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {

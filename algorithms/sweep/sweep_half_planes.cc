@@ -249,6 +249,9 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   } else {
     hp.accepted = true;
   }
+  hp.candidate = hp.accepted || (hp.views >= o.min_views && k0 > 0 && k0 < samples - 1 &&
+                                 hp.similarity >= o.candidate_min_similarity &&
+                                 hp.curvature <= -o.candidate_min_curvature);
   return hp;
 }
 

@@ -45,8 +45,13 @@ struct HalfPlane {
   // line's end points and the correlating points within extent_m, lifted
   // onto the plane. Empty when there were no such points.
   std::vector<Eigen::Vector2d> support;
-  bool accepted = false;
-  std::string reason;  // why not accepted; empty when accepted
+  bool accepted = false;  // the paper's test (SweepOptions::min_similarity, min_curvature)
+  // Passes the looser candidate test (SweepOptions::candidate_*): enough
+  // to propose a plane that §5's verification over the whole patch then
+  // confirms or rejects. Every accepted half-plane is a candidate.
+  bool candidate = false;
+  std::string
+      reason;  // why not accepted; empty when accepted  // why not accepted; empty when accepted
   // Sim at the coarse samples theta_min, theta_min + step, ... (all points
   // and views, before outlier removal and the valid-view test).
   std::vector<double> profile;

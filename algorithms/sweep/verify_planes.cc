@@ -42,6 +42,30 @@ bool OnPlane(const Camera& cam, const Pose& pose, const Eigen::Vector4d& pl,
   return true;
 }
 
+// Parallax (px) per metre of height at X between the view nearest in plan
+// and the view where it is largest.
+double ParallaxPerMetre(const Block& block, const Eigen::Vector3d& X) {
+  const Eigen::Vector3d up(0, 0, 1);
+  int ref = -1;
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<int, Eigen::Vector2d>> motion;
+  for (int v = 0; v < static_cast<int>(block.views.size()); ++v) {
+    const View& view = block.views[v];
+    const Camera& cam = block.CameraOf(view);
+    const auto p0 = Project(cam, view.pose, X);
+    const auto p1 = Project(cam, view.pose, X + up);
+    if (!p0 || !p1 || p0->x() < 0 || p0->y() < 0 || p0->x() > cam.width || p0->y() > cam.height)
+      continue;
+    motion.emplace_back(v, *p1 - *p0);
+    const double d = (view.pose.C - X).head<2>().norm();
+    if (d < best) best = d, ref = static_cast<int>(motion.size()) - 1;
+  }
+  double k = 0;
+  for (size_t i = 0; i < motion.size(); ++i)
+    k = std::max(k, (motion[i].second - motion[ref].second).norm());
+  return k;
+}
+
 struct Scores {
   double sum = 0;
   int n = 0;
@@ -171,10 +195,16 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       return;
     }
     v.score = at.sum / at.n;
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (const auto& q : p.patch) c += q;
+    c /= static_cast<double>(p.patch.size());
+    const double k = ParallaxPerMetre(block, {c.x(), c.y(), PlaneZ(p.plane, c.x(), c.y())});
+    v.offset_m = std::clamp(k > 0 ? o.offset_parallax_px / k : o.max_offset_m, o.min_offset_m,
+                            o.max_offset_m);
     Eigen::Vector4d below = p.plane, above = p.plane;
     // z = -(a x + b y + d) / c: moving z by +h changes d by -c h.
-    below[3] += p.plane[2] * o.height_offset_m;
-    above[3] -= p.plane[2] * o.height_offset_m;
+    below[3] += p.plane[2] * v.offset_m;
+    above[3] -= p.plane[2] * v.offset_m;
     const Scores lo = ScorePlane(block, grey, samples, below, o);
     const Scores hi = ScorePlane(block, grey, samples, above, o);
     v.score_below = lo.n ? lo.sum / lo.n : 0.0;
@@ -187,7 +217,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     } else if (v.score < std::max(v.score_below, v.score_above) + o.min_margin) {
       std::snprintf(buf, sizeof buf,
                     "height not confirmed: score %.2f, %.1f m %s %.2f (margin %.2f needed)",
-                    v.score, o.height_offset_m, v.score_below > v.score_above ? "lower" : "higher",
+                    v.score, v.offset_m, v.score_below > v.score_above ? "lower" : "higher",
                     std::max(v.score_below, v.score_above), o.min_margin);
       v.reason = buf;
     } else {

@@ -14,7 +14,7 @@ namespace roofsweep {
 // Zisserman 2000, §5: "patch verification over all views by correlation").
 struct VerifyOptions {
   // Samples on a plan-view grid of this spacing (m) inside the patch.
-  double spacing_m = 0.5;
+  double spacing_m = 0.25;
   // Correlation window (2 r + 1)^2 in the reference view, mapped pixel by
   // pixel through the plane into the other views (exact plane-induced
   // mapping, as in the sweep).
@@ -25,21 +25,28 @@ struct VerifyOptions {
   // A patch with fewer textured samples cannot be verified and is
   // rejected (its score is reported as NaN): the sweep's evidence lies
   // along the line, a roof face needs its own.
-  int min_samples = 8;
+  int min_samples = 32;
   // Accept when the mean Cor+ over the samples reaches min_score and
-  // exceeds by min_margin the score of the same plane moved up and down by
-  // height_offset_m: the images must clearly prefer this height. Rough
-  // surfaces (tree crowns, hedges) correlate about equally well over a
-  // range of heights; roofs do not.
+  // exceeds by min_margin the score of the same plane moved up and down:
+  // the images must clearly prefer this height. Rough surfaces (tree
+  // crowns, hedges) correlate about equally well over a range of heights;
+  // roofs do not. The offset is the height change that moves the patch
+  // centre by offset_parallax_px relative to the reference in the widest
+  // baseline view (more than the window's half-width, so that the windows
+  // decorrelate), bounded by [min_offset_m, max_offset_m]: about 0.8 m at
+  // 5 cm GSD with base-to-height 0.3, more for small baselines.
   double min_score = 0.3;
-  double height_offset_m = 1.0;
+  double offset_parallax_px = 5.0;
+  double min_offset_m = 0.25;
+  double max_offset_m = 5.0;
   double min_margin = 0.1;
 };
 
 struct PlaneVerification {
   double score = 0;  // mean Cor+ at the plane; NaN when unverifiable
   double score_below = 0, score_above = 0;
-  int samples = 0;  // textured samples used
+  double offset_m = 0;  // height offset of the alternatives
+  int samples = 0;      // textured samples used
   bool accepted = false;
   std::string reason;  // why not accepted
 };

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/sweep/sweep_half_planes.h"
@@ -219,12 +220,14 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   t0 = Clock::now();
   const GroupingResult grouped = GroupHalfPlanes(lines, hps, r.grouping);
   out.planes = static_cast<int>(grouped.planes.size());
-  out.rejected = grouped.rejected;
-  out.stages.push_back(
-      {"grouping into planes",
-       Str("%d planes, %zu dropped in conflicts", out.planes, grouped.rejected.size()), Since(t0)});
+  int candidates = 0;
+  for (const HalfPlane& h : hps) candidates += h.candidate;
+  out.stages.push_back({"grouping into planes",
+                        Str("%d planes from %d candidate sides", out.planes, candidates),
+                        Since(t0)});
 
-  // §5 verification: every plane's patch against all views that see it.
+  // §5: every plane's patch verified against all views that see it, then
+  // conflicts resolved by the verified evidence (patch area x score).
   t0 = Clock::now();
   std::vector<RoofPlaneHypothesis> roof_planes = ToRoofPlanes(grouped.planes);
   {
@@ -237,10 +240,16 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         out.rejected.push_back(roof_planes[i].id + ": " + checks[i].reason);
         continue;
       }
+      roof_planes[i].similarity = checks[i].score;
+      roof_planes[i].score = std::abs(SignedArea(roof_planes[i].patch)) * checks[i].score;
       verified.push_back(std::move(roof_planes[i]));
     }
+    const size_t n_verified = verified.size();
+    const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping.max_overlap);
+    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
     out.stages.push_back({"verification",
-                          Str("%zu of %zu planes confirmed", verified.size(), roof_planes.size()),
+                          Str("%zu of %zu planes confirmed, %zu left after conflicts", n_verified,
+                              roof_planes.size(), verified.size()),
                           Since(t0)});
     roof_planes = std::move(verified);
   }
