@@ -10,10 +10,13 @@ test_quickstart_runs() {
     fail quickstart_exit_0 "$(tail -5 "$WORK/err.txt")"
     return
   fi
-  for f in block.json lines.gpkg lines3d.gpkg model.city.json model.fgb model.gpkg overlay.png; do
+  for f in block.json lines.gpkg lines3d.gpkg buildings.gpkg run.json buildings.gml buildings.city.json \
+    truth.fgb overlay.png; do
     [[ -s "$WORK/q/$f" ]] && pass "quickstart_wrote_$f" || fail "quickstart_wrote_$f" "missing"
   done
   grep -q "completeness" "$WORK/out.txt" && pass quickstart_prints_scores || fail quickstart_prints_scores "no table"
+  grep -q "<bldg:Building " "$WORK/q/buildings.gml" && pass quickstart_built_buildings \
+    || fail quickstart_built_buildings "no building reconstructed"
 }
 
 run_tests
