@@ -1,13 +1,11 @@
 #!/usr/bin/env bash
-# make demo: simulate a small city block, reconstruct what roofsweep can
-# reconstruct so far, write CityGML/CityJSON/GeoPackage into out/ and print
-# the quality tables.
+# make demo: simulate a small city block, reconstruct it as LoD2 buildings,
+# write CityGML/CityJSON/GeoPackage into out/ and print the quality tables.
 set -euo pipefail
 BUILD=${1:-build}
 RS="$BUILD/plugin/cli/roofsweep"
 OUT=out
 mkdir -p "$OUT"
-has() { "$RS" "$1" --help >/dev/null 2>&1; }
 
 echo "== 1. simulate the 'realistic' preset (oriented images + ground truth) -> $OUT/block"
 "$RS" simulate -preset realistic -seed 1 -o "$OUT/block" -overwrite
@@ -20,17 +18,11 @@ mkdir -p "$OUT/lines_png"
 echo "== 3. segment matching into 3D lines -> $OUT/lines3d.gpkg, scored against the true edges"
 "$RS" match "$OUT/block" -o "$OUT/lines3d.gpkg" -truth "$OUT/block/groundtruth_edges.json" -overwrite
 
-if has run; then
-  echo "== 4. LoD2 buildings -> $OUT/buildings.{gpkg,gml,city.json}"
-  "$RS" run "$OUT/block" -o "$OUT/buildings.gpkg" -overwrite
-  "$RS" convert "$OUT/buildings.gpkg" "$OUT/buildings.gml" -overwrite
-  "$RS" convert "$OUT/buildings.gpkg" "$OUT/buildings.city.json" -overwrite
-  echo "== 5. quality against the ground truth"
-  "$RS" eval "$OUT/buildings.gml" "$OUT/block" -lines "$OUT/lines3d.gpkg" -png "$OUT/eval.png" -overwrite
-else
-  echo "== 4. LoD2 reconstruction ('roofsweep run', the plane sweep) is not built yet."
-  echo "      The ground truth is written in all three formats to show the writers:"
-  "$RS" convert "$OUT/block/groundtruth.gml" "$OUT/groundtruth.gpkg" -overwrite
-  "$RS" convert "$OUT/block/groundtruth.gml" "$OUT/groundtruth.city.json" -overwrite
-  ls -la "$OUT/block/groundtruth.gml" "$OUT/groundtruth.gpkg" "$OUT/groundtruth.city.json"
-fi
+echo "== 4. LoD2 buildings (half-plane sweep, roof planes, closed solids) -> $OUT/buildings.{gpkg,gml,city.json}"
+"$RS" run "$OUT/block" -lines "$OUT/lines3d.gpkg" -o "$OUT/buildings.gpkg" \
+  -report "$OUT/run_report.json" -overwrite
+"$RS" convert "$OUT/buildings.gpkg" "$OUT/buildings.gml" -overwrite
+"$RS" convert "$OUT/buildings.gpkg" "$OUT/buildings.city.json" -overwrite
+
+echo "== 5. quality against the ground truth (plan-view overlay: $OUT/eval.png)"
+"$RS" eval "$OUT/buildings.gml" "$OUT/block" -lines "$OUT/lines3d.gpkg" -png "$OUT/eval.png" -overwrite
