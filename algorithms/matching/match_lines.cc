@@ -249,6 +249,14 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
             const SideColour& a = views[i].sides[s][side];
             const SideColour& b = views[j].sides[h.sj][side_j(h, side)];
             if (!a.valid || !b.valid) continue;
+            if (!o.init_from_best_correlation) {
+              // The most similar candidate side (the minimum statistics).
+              const double m = MeanStatistic(a, b, o.max_test_pixels);
+              const double c = CovStatistic(a, b, o.max_test_pixels);
+              bm = bm < 0 ? m : std::min(bm, m);
+              bc = bc < 0 ? c : std::min(bc, c);
+              continue;
+            }
             const double hc = SideCorrelation(views[i], views[j], g, h, side, o);
             if (hc > best_h) {
               best_h = hc;

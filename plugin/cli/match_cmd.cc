@@ -10,6 +10,7 @@ namespace {
 
 int Match(const std::vector<std::string>& args, Context& ctx) {
   MatchRequest r;
+  bool init_best = false;
   ArgParser p("match",
               "Matches straight colour edge segments across the views of a block and writes 3D "
               "lines (Scholze et al. 2000): geometric, chromatic and correlation tests, "
@@ -28,12 +29,16 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
               "refused)")
       .Option("-truth", &r.truth, "FILE",
               "groundtruth_edges.json of `roofsweep simulate`: true-pair counts and line scores")
+      .Flag("-chromatic_init_best", &init_best,
+            "chromatic thresholds from the best-correlating candidates (keeps more true pairs, ~2x "
+            "slower)")
       .Option("-chromatic_factor", &r.match.threshold_factor, "F",
               "chromatic thresholds = F x median statistic of the best candidates (default 8)")
       .Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
       .Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
   if (!p.Parse(args)) return 0;
+  r.match.init_from_best_correlation = init_best;
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
   if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());

@@ -8,8 +8,12 @@ namespace roofsweep::cli {
 namespace {
 
 // Options shared by `run` and `sweep`, with the papers' defaults.
-void AddProcessingOptions(ArgParser& p, RunRequest& r) {
+void AddProcessingOptions(ArgParser& p, RunRequest& r, bool* init_best_out) {
+  bool& init_best = *init_best_out;
   p.Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
+      .Flag("-chromatic_init_best", &init_best,
+            "chromatic thresholds from the best-correlating candidates (keeps more true pairs, ~2x "
+            "slower)")
       .Option("-chromatic_factor", &r.match.threshold_factor, "F",
               "chromatic thresholds = F x median statistic (default 8)")
       .Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
@@ -45,10 +49,12 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "lowest roof plane above the ground (default 2.5)")
       .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",
               "steepest roof plane (default 70)");
-  AddProcessingOptions(p, r);
+  bool init_best = false;
+  AddProcessingOptions(p, r, &init_best);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite");
   if (!p.Parse(args)) return 0;
+  r.match.init_from_best_correlation = init_best;
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);
@@ -72,9 +78,11 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
       .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
       .Option("-report", &r.report, "FILE", "JSON report with the stage table");
-  AddProcessingOptions(p, r);
+  bool init_best = false;
+  AddProcessingOptions(p, r, &init_best);
   p.Example("roofsweep sweep out/block -o half_planes.gpkg");
   if (!p.Parse(args)) return 0;
+  r.match.init_from_best_correlation = init_best;
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);
