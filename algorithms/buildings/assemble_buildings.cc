@@ -219,7 +219,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
   }
 
   // 2. Buildings: patches that touch and whose planes meet there.
-  UnionFind uf(n);
+  UnionFind uf(n), parts(n);
   std::vector<Ring2> grown(n);
   for (int i : keep) grown[i] = GrowConvex(planes[i].patch, o.adjacency_gap_m);
   for (size_t a = 0; a < keep.size(); ++a)
@@ -229,11 +229,21 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
       const Ring2 meet = IntersectConvex(grown[i], grown[j]);
       if (meet.empty()) continue;
       const Eigen::Vector2d c = Centroid(meet);
-      if (std::abs(PlaneZ(planes[i].plane, c) - PlaneZ(planes[j].plane, c)) <= o.max_step_m)
-        uf.Join(i, j);
+      if (std::abs(PlaneZ(planes[i].plane, c) - PlaneZ(planes[j].plane, c)) > o.max_step_m)
+        continue;
+      uf.Join(i, j);
+      // A ridge or hip (each plane lies below the other's extension over
+      // its own patch) keeps both planes in one convex part; a valley
+      // (each lies above) separates parts, whose lower envelopes are built
+      // apart: one envelope over both would cut the higher wing away.
+      const Eigen::Vector2d ci = Centroid(planes[i].patch), cj = Centroid(planes[j].patch);
+      const bool convex =
+          PlaneZ(planes[i].plane, ci) <= PlaneZ(planes[j].plane, ci) + o.max_step_m &&
+          PlaneZ(planes[j].plane, cj) <= PlaneZ(planes[i].plane, cj) + o.max_step_m;
+      if (convex || !o.split_at_valleys) parts.Join(i, j);
     }
   std::map<int, std::vector<int>> groups;
-  for (int i : keep) groups[uf.Find(i)].push_back(i);
+  for (int i : keep) groups[parts.Find(i)].push_back(i);
   res.hypotheses = static_cast<int>(groups.size());
 
   int building_no = 0;
@@ -382,6 +392,8 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
     b.double_attributes["photometric_score"] = roof_faces.empty() ? 0.0 : sim / roof_faces.size();
     b.double_attributes["reliability"] = score;
     b.double_attributes["footprint_m2"] = footprint;
+    // Convex parts of one building (split at valleys) share this number.
+    b.double_attributes["building_group"] = static_cast<double>(uf.Find(root));
 
     const SolidCheckResult check = CheckBuildingSolid(b);
     if (!check.Valid()) {

@@ -41,6 +41,11 @@ struct AssemblyOptions {
   // separate building.
   double adjacency_gap_m = 1.0;
   double max_step_m = 0.7;
+  // Planes meeting at a valley (concave junction) go into separate convex
+  // parts, each a solid of its own with the attribute building_group in
+  // common (the parts overlap in plan near the valley); false: one lower
+  // envelope per building, which drops the higher wing of an L or T.
+  bool split_at_valleys = true;
   // Roof faces of the lower envelope smaller than this, or lying mostly
   // outside their own patch (less than min_support of their area inside
   // the patch grown by adjacency_gap_m), are dropped and the envelope

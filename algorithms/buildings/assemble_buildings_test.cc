@@ -153,6 +153,27 @@ TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {
   ExpectAllValid(r);
 }
 
+TEST(AssembleBuildings, ValleySplitsIntoConvexPartsOfOneBuilding) {
+  // A butterfly roof: two planes falling towards a valley at y = 4. One
+  // lower envelope would turn the V upside down; two parts keep it.
+  std::vector<RoofPlaneHypothesis> in = {
+      Hyp(SlopedPlane({0, 4, 6}, std::atan(0.5) * 180 / M_PI, 90),
+          {{0, 0}, {10, 0}, {10, 4}, {0, 4}}),
+      Hyp(SlopedPlane({0, 4, 6}, std::atan(0.5) * 180 / M_PI, -90),
+          {{0, 4}, {10, 4}, {10, 8}, {0, 8}})};
+  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  for (const Building& b : r.model.buildings) {
+    EXPECT_EQ(b.roof_type, roof_type::kMonopitch) << b.id;
+    EXPECT_NEAR(b.measured_height, 8.0, 1e-6) << b.id;
+  }
+  EXPECT_EQ(r.model.buildings[0].double_attributes.at("building_group"),
+            r.model.buildings[1].double_attributes.at("building_group"));
+  ExpectAllValid(r);
+  // The gable (a ridge) stays one part.
+  EXPECT_EQ(AssembleBuildings(Gable(), Flat(0)).model.buildings.size(), 1u);
+}
+
 TEST(ConvexPolygon2, ClipIntersectDistance) {
   const Ring2 sq = ConvexHull({{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}});
   ASSERT_EQ(sq.size(), 4u);
