@@ -209,6 +209,28 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     const Scores hi = ScorePlane(block, grey, samples, above, o);
     v.score_below = lo.n ? lo.sum / lo.n : 0.0;
     v.score_above = hi.n ? hi.sum / hi.n : 0.0;
+    // Tilted alternatives: the plane turned about the patch centre so that
+    // the patch's farthest point along x (then y) moves by the offset; they
+    // catch a wrong slope that a height shift cannot.
+    const double zc = PlaneZ(p.plane, c.x(), c.y());
+    const double alpha = -p.plane[0] / p.plane[2], beta = -p.plane[1] / p.plane[2];
+    for (int axis = 0; axis < 2; ++axis) {
+      double reach = 0;
+      for (const auto& q : p.patch) reach = std::max(reach, std::abs(q[axis] - c[axis]));
+      if (reach < 1e-3) continue;
+      for (int sign : {-1, 1}) {
+        double a = alpha, b = beta;
+        (axis == 0 ? a : b) += sign * v.offset_m / reach;
+        // z = a (x - cx) + b (y - cy) + zc  ->  n ~ (-a, -b, 1).
+        Eigen::Vector3d n(-a, -b, 1);
+        const double norm = n.norm();
+        n /= norm;
+        const Eigen::Vector4d tilted(n.x(), n.y(), n.z(),
+                                     -n.dot(Eigen::Vector3d(c.x(), c.y(), zc)));
+        const Scores t = ScorePlane(block, grey, samples, tilted, o);
+        v.score_tilted = std::max(v.score_tilted, t.n ? t.sum / t.n : 0.0);
+      }
+    }
     char buf[200];
     if (v.score < o.min_score) {
       std::snprintf(buf, sizeof buf, "photometric score %.2f < %.2f over %d samples", v.score,
@@ -219,6 +241,12 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                     "height not confirmed: score %.2f, %.1f m %s %.2f (margin %.2f needed)",
                     v.score, v.offset_m, v.score_below > v.score_above ? "lower" : "higher",
                     std::max(v.score_below, v.score_above), o.min_margin);
+      v.reason = buf;
+    } else if (v.score < v.score_tilted + o.min_tilt_margin) {
+      std::snprintf(buf, sizeof buf,
+                    "slope not confirmed: score %.2f, tilted by %.1f m at the edge %.2f (margin "
+                    "%.2f needed)",
+                    v.score, v.offset_m, v.score_tilted, o.min_tilt_margin);
       v.reason = buf;
     } else {
       v.accepted = true;

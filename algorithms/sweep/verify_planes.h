@@ -30,7 +30,9 @@ struct VerifyOptions {
   // exceeds by min_margin the score of the same plane moved up and down:
   // the images must clearly prefer this height. Rough surfaces (tree
   // crowns, hedges) correlate about equally well over a range of heights;
-  // roofs do not. The offset is the height change that moves the patch
+  // roofs do not. The same holds for the plane tilted about the patch
+  // centre (about x and about y, both ways) so that the patch edge moves by
+  // the offset: a wrong slope is caught too. The offset is the height change that moves the patch
   // centre by offset_parallax_px relative to the reference in the widest
   // baseline view (more than the window's half-width, so that the windows
   // decorrelate), bounded by [min_offset_m, max_offset_m]: about 0.8 m at
@@ -40,13 +42,18 @@ struct VerifyOptions {
   double min_offset_m = 0.25;
   double max_offset_m = 5.0;
   double min_margin = 0.1;
+  // The tilted alternatives agree with the plane near the patch centre, so
+  // the plane need only beat them (a margin of 0.1 here rejected a third of
+  // the true planes on `realistic`).
+  double min_tilt_margin = 0.0;
 };
 
 struct PlaneVerification {
   double score = 0;  // mean Cor+ at the plane; NaN when unverifiable
   double score_below = 0, score_above = 0;
-  double offset_m = 0;  // height offset of the alternatives
-  int samples = 0;      // textured samples used
+  double score_tilted = 0;  // best of the four tilted alternatives
+  double offset_m = 0;      // height offset of the alternatives (at the patch edge when tilted)
+  int samples = 0;          // textured samples used
   bool accepted = false;
   std::string reason;  // why not accepted
 };

@@ -1,0 +1,81 @@
+#include "algorithms/sweep/verify_planes.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "algorithms/sweep/test_scene.h"
+
+namespace roofsweep {
+namespace {
+
+using sweep_test::Quad;
+using sweep_test::TestScene;
+
+// A 10 x 6 m face rising from an eave at z = 6 (y = 6) to z = 6 + 6 tan(30)
+// at y = 0, over a textured ground.
+Quad Face(bool textured) {
+  Quad q;
+  q.origin = {-5, 0, 6 + 6 * std::tan(30 * M_PI / 180)};
+  q.u = {10, 0, 0};
+  q.v = {0, 6, -6 * std::tan(30 * M_PI / 180)};
+  q.textured = textured;
+  q.seed = 5;
+  return q;
+}
+
+RoofPlaneHypothesis Hypothesis(const Quad& q, double dz = 0, double tilt_deg = 0) {
+  Eigen::Vector3d n = q.u.cross(q.v).normalized();
+  if (n.z() < 0) n = -n;
+  if (tilt_deg != 0) {
+    // Rotate the normal about the x axis (the face's slope changes).
+    const double a = tilt_deg * M_PI / 180;
+    n = Eigen::Vector3d(n.x(), n.y() * std::cos(a) - n.z() * std::sin(a),
+                        n.y() * std::sin(a) + n.z() * std::cos(a));
+  }
+  const Eigen::Vector3d c = q.origin + 0.5 * (q.u + q.v) + Eigen::Vector3d(0, 0, dz);
+  RoofPlaneHypothesis h;
+  h.plane << n, -n.dot(c);
+  h.patch = {{-4.5, 0.5}, {4.5, 0.5}, {4.5, 5.5}, {-4.5, 5.5}};
+  return h;
+}
+
+std::vector<PlaneVerification> Verify(const TestScene& scene,
+                                      const std::vector<RoofPlaneHypothesis>& planes) {
+  const Block block = sweep_test::FourViewBlock();
+  NullProgress progress;
+  return VerifyPlanes(block, sweep_test::RenderAll(scene, block), planes, VerifyOptions(),
+                      progress);
+}
+
+TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
+  TestScene scene;
+  scene.quads = {Face(true)};
+  const Quad f = Face(true);
+  const auto v = Verify(scene, {Hypothesis(f), Hypothesis(f, 1.5), Hypothesis(f, 0, 15)});
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_TRUE(v[0].accepted) << v[0].reason;
+  EXPECT_GT(v[0].score, 0.6);
+  EXPECT_GT(v[0].score, std::max(v[0].score_below, v[0].score_above) + 0.1);
+  EXPECT_GT(v[0].offset_m, 0.25);  // from the block's parallax, not a constant
+  EXPECT_GE(v[0].samples, 32);
+  for (int k : {1, 2}) {
+    EXPECT_FALSE(v[k].accepted) << k << ": score " << v[k].score << " below " << v[k].score_below << " above " << v[k].score_above << " offset " << v[k].offset_m << " " << v[k].reason;
+    EXPECT_FALSE(v[k].reason.empty()) << k;
+    EXPECT_LT(v[k].score, v[0].score) << k;
+  }
+}
+
+TEST(VerifyPlanes, UntexturedPatchCannotBeVerified) {
+  TestScene scene;
+  scene.quads = {Face(false)};
+  const auto v = Verify(scene, {Hypothesis(Face(false))});
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_FALSE(v[0].accepted);
+  EXPECT_TRUE(std::isnan(v[0].score));
+  EXPECT_NE(v[0].reason.find("cannot be verified"), std::string::npos) << v[0].reason;
+}
+
+}  // namespace
+}  // namespace roofsweep
