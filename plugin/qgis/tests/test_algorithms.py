@@ -327,8 +327,12 @@ def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path
                          feedback=RecordingFeedback())
     out = str(tmp_path / "buildings.gpkg")
     fb = RecordingFeedback()
-    rec = processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out}, feedback=fb)
+    report = str(tmp_path / "run.json")
+    rec = processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out, "REPORT": report},
+                         feedback=fb)
     assert os.path.isfile(out)
+    stages = [s["stage"] for s in json.load(open(report))["stages"]]
+    assert "half-plane sweep" in stages and "LoD2 buildings" in stages, stages
     names = [u.split("layername=")[1] for u in rec["LAYERS"]]
     assert "buildings" in names and "roof_surfaces" in names
     lyr = QgsVectorLayer(out + "|layername=buildings", "b", "ogr")

@@ -1,7 +1,8 @@
 """Reconstruct LoD2 buildings: roofsweep run (the whole pipeline)."""
 
-from qgis.core import (QgsProcessingOutputMultipleLayers, QgsProcessingParameterFile,
-                       QgsProcessingParameterFileDestination)
+from qgis.core import (QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
+                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
+                       QgsProcessingParameterNumber)
 
 from .base import CITYMODEL_LAYERS, LINES_LAYERS, RoofsweepAlgorithm
 from .convert import OUTPUT_FILTER
@@ -14,10 +15,12 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
     HELP = ("Runs the whole pipeline on an oriented block: line segments, 3D lines, plane sweep, LoD2 "
             "buildings. The output format follows the extension (GeoPackage, CityGML, CityJSON); GeoPackage "
             "layers are added to the project.")
-    USES_OPTIONS = ("-o", "-overwrite")
+    USES_OPTIONS = ("-o", "-overwrite", "-report", "-min_height")
 
     BLOCK = "BLOCK"
     OUTPUT = "OUTPUT"
+    REPORT = "REPORT"
+    MIN_HEIGHT = "MIN_HEIGHT"
     LAYERS = "LAYERS"
 
     def initAlgorithm(self, config=None):
@@ -25,13 +28,26 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
                                                      fileFilter="Block manifest (*.json)"))
         self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("LoD2 buildings"),
                                                                 fileFilter=OUTPUT_FILTER))
+        self.addParameter(QgsProcessingParameterFileDestination(
+            self.REPORT, self.tr("Report: stage table and why each rejected plane or building was not built"),
+            fileFilter="JSON (*.json)", optional=True, createByDefault=False))
+        min_height = QgsProcessingParameterNumber(self.MIN_HEIGHT, self.tr("Lowest roof above the ground (m)"),
+                                                  QgsProcessingParameterNumber.Double, 2.5, minValue=0.0)
+        min_height.setFlags(min_height.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+        self.addParameter(min_height)
         self.addOutput(QgsProcessingOutputMultipleLayers(self.LAYERS, self.tr("Loaded layers")))
 
     def processAlgorithm(self, parameters, context, feedback):
         block = self.existing_file(self.parameterAsFile(parameters, self.BLOCK, context), "Block")
         out = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
-        self.run_program([block, "-overwrite", "-o", out], feedback)
+        args = [block, "-overwrite", "-o", out,
+                "-min_height", repr(self.parameterAsDouble(parameters, self.MIN_HEIGHT, context))]
+        report = self.parameterAsFileOutput(parameters, self.REPORT, context) \
+            if self.given(parameters, self.REPORT) else ""
+        if report:
+            args += ["-report", report]
+        self.run_program(args, feedback)
         layers = []
         if out.lower().endswith(".gpkg"):
             layers = self.load_gpkg_layers(out, CITYMODEL_LAYERS + LINES_LAYERS, context, self.OUTPUT)
-        return {self.OUTPUT: out, self.LAYERS: layers}
+        return {self.OUTPUT: out, self.REPORT: report, self.LAYERS: layers}
