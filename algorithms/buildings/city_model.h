@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace roofsweep {
@@ -80,6 +81,10 @@ struct CityModel {
   // Replaces every vertex v by f(v) (a change of frame or CRS, a shift).
   template <typename F>
   void TransformVertices(F f) {
+    // A lambda returning an Eigen expression (`return v + shift;`) would
+    // hand back references to its own temporaries: demand a plain vector.
+    static_assert(std::is_same_v<std::invoke_result_t<F&, const Eigen::Vector3d&>, Eigen::Vector3d>,
+                  "TransformVertices: f must return Eigen::Vector3d (declare -> Eigen::Vector3d)");
     for (Building& b : buildings)
       for (Surface& s : b.surfaces)
         for (Polygon3& p : s.polygons) {
