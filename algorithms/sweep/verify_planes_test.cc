@@ -61,7 +61,9 @@ TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
   EXPECT_GT(v[0].offset_m, 0.25);  // from the block's parallax, not a constant
   EXPECT_GE(v[0].samples, 32);
   for (int k : {1, 2}) {
-    EXPECT_FALSE(v[k].accepted) << k << ": score " << v[k].score << " below " << v[k].score_below << " above " << v[k].score_above << " offset " << v[k].offset_m << " " << v[k].reason;
+    EXPECT_FALSE(v[k].accepted) << k << ": score " << v[k].score << " below " << v[k].score_below
+                                << " above " << v[k].score_above << " offset " << v[k].offset_m
+                                << " " << v[k].reason;
     EXPECT_FALSE(v[k].reason.empty()) << k;
     EXPECT_LT(v[k].score, v[0].score) << k;
   }
