@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -11,21 +10,12 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/solid_check.h"
+#include "algorithms/core/format.h"
 
 namespace roofsweep {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-
-std::string Fmt(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string Fmt(const char* fmt, ...) {
-  char buf[400];
-  va_list ap;
-  va_start(ap, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, ap);
-  va_end(ap);
-  return buf;
-}
 
 double PlaneZ(const Eigen::Vector4d& pl, const Eigen::Vector2d& p) {
   return -(pl[0] * p.x() + pl[1] * p.y() + pl[3]) / pl[2];
@@ -180,7 +170,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
   AssemblyResult res;
   res.planes_in = static_cast<int>(planes.size());
   const int n = static_cast<int>(planes.size());
-  auto name = [&](int i) { return planes[i].id.empty() ? Fmt("plane %d", i) : planes[i].id; };
+  auto name = [&](int i) { return planes[i].id.empty() ? StrFormat("plane %d", i) : planes[i].id; };
 
   // 1. Plausible roof planes.
   std::vector<int> keep;
@@ -193,14 +183,14 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
       continue;
     }
     if (p.longest_line_m < o.min_line_length_m) {
-      res.rejected.push_back(name(i) + Fmt(": longest supporting line %.2f m < %.2f m",
-                                           p.longest_line_m, o.min_line_length_m));
+      res.rejected.push_back(name(i) + StrFormat(": longest supporting line %.2f m < %.2f m",
+                                                 p.longest_line_m, o.min_line_length_m));
       continue;
     }
     const double slope = std::acos(std::clamp(nrm.z(), -1.0, 1.0)) / kDeg;
     if (slope > o.max_roof_slope_deg) {
-      res.rejected.push_back(
-          name(i) + Fmt(": slope %.1f deg > %.1f deg (a wall?)", slope, o.max_roof_slope_deg));
+      res.rejected.push_back(name(i) + StrFormat(": slope %.1f deg > %.1f deg (a wall?)", slope,
+                                                 o.max_roof_slope_deg));
       continue;
     }
     const Eigen::Vector2d c = Centroid(p.patch);
@@ -212,7 +202,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
     const double h = PlaneZ(p.plane, c) - g;
     if (h < o.min_height_m) {
       res.rejected.push_back(name(i) +
-                             Fmt(": %.2f m above the ground < %.2f m", h, o.min_height_m));
+                             StrFormat(": %.2f m above the ground < %.2f m", h, o.min_height_m));
       continue;
     }
     keep.push_back(i);
@@ -249,7 +239,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
   int building_no = 0;
   for (auto& [root, members] : groups) {
     ++building_no;
-    const std::string bname = Fmt("building hypothesis %d", building_no);
+    const std::string bname = StrFormat("building hypothesis %d", building_no);
     std::vector<int> active = members;
     Ring2 outline;
     std::vector<Ring2> regions;
@@ -280,15 +270,15 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
         std::string why;
         if (area < o.min_face_area_m2) {
           value = area;
-          why = Fmt(": roof face of %.2f m2 < %.2f m2 (%s)", area, o.min_face_area_m2,
-                    area == 0 ? "above the roof everywhere" : "sliver");
+          why = StrFormat(": roof face of %.2f m2 < %.2f m2 (%s)", area, o.min_face_area_m2,
+                          area == 0 ? "above the roof everywhere" : "sliver");
         } else if (support < o.min_support) {
           value = support;
-          why = Fmt(": only %.0f %% of its roof face lies where the images saw the plane",
-                    100 * support);
+          why = StrFormat(": only %.0f %% of its roof face lies where the images saw the plane",
+                          100 * support);
         } else if (low - ground_z < 0.5 * o.min_height_m) {
           value = -1;  // a roof below the walls' minimum height is never right
-          why = Fmt(": its roof face comes down to %.2f m above the ground", low - ground_z);
+          why = StrFormat(": its roof face comes down to %.2f m above the ground", low - ground_z);
         }
         if (value < worst_value ||
             (value == worst_value && worst >= 0 && planes[i].score < planes[active[worst]].score)) {
@@ -308,8 +298,8 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
     }
     const double footprint = SignedArea(outline);
     if (footprint < o.min_footprint_m2) {
-      res.rejected.push_back(bname +
-                             Fmt(": footprint %.1f m2 < %.1f m2", footprint, o.min_footprint_m2));
+      res.rejected.push_back(
+          bname + StrFormat(": footprint %.1f m2 < %.1f m2", footprint, o.min_footprint_m2));
       continue;
     }
     if (!std::isfinite(ground_z)) {
@@ -336,7 +326,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
     };
 
     Building b;
-    b.id = Fmt("rs_b%04d", static_cast<int>(res.model.buildings.size()) + 1);
+    b.id = StrFormat("rs_b%04d", static_cast<int>(res.model.buildings.size()) + 1);
     Surface roof{SurfaceType::kRoof, "", {}};
     double lines = 0, sim = 0, score = 0;
     std::vector<Polygon3> roof_faces;

@@ -11,14 +11,6 @@ double Cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-bool InsideConvex(const Ring2& ring, const Eigen::Vector2d& p) {
-  const size_t n = ring.size();
-  if (n < 3) return false;
-  for (size_t i = 0; i < n; ++i)
-    if (Cross(ring[i], ring[(i + 1) % n], p) < -1e-12) return false;
-  return true;
-}
-
 bool SegmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                    const Eigen::Vector2d& d) {
   const double d1 = Cross(a, b, c), d2 = Cross(a, b, d), d3 = Cross(c, d, a), d4 = Cross(c, d, b);
@@ -26,6 +18,14 @@ bool SegmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
 }
 
 }  // namespace
+
+bool InsideConvex(const Ring2& ring, const Eigen::Vector2d& p) {
+  const size_t n = ring.size();
+  if (n < 3) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (Cross(ring[i], ring[(i + 1) % n], p) < -1e-12) return false;
+  return true;
+}
 
 Ring2 ConvexHull(std::vector<Eigen::Vector2d> pts) {
   std::sort(pts.begin(), pts.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {

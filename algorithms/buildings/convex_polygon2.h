@@ -27,6 +27,9 @@ Ring2 ClipHalfPlane(const Ring2& ring, double a, double b, double c);
 // Intersection of two convex polygons.
 Ring2 IntersectConvex(const Ring2& p, const Ring2& q);
 
+// True when p lies inside or on the boundary of the convex ring.
+bool InsideConvex(const Ring2& ring, const Eigen::Vector2d& p);
+
 // Distance between two convex polygons (0 when they overlap).
 double ConvexDistance(const Ring2& p, const Ring2& q);
 

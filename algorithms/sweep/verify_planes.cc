@@ -15,17 +15,6 @@
 namespace roofsweep {
 namespace {
 
-bool InsideConvexRing(const std::vector<Eigen::Vector2d>& r, const Eigen::Vector2d& p) {
-  const size_t n = r.size();
-  if (n < 3) return false;
-  for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d& a = r[i];
-    const Eigen::Vector2d& b = r[(i + 1) % n];
-    if ((b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x()) < 0) return false;
-  }
-  return true;
-}
-
 double PlaneZ(const Eigen::Vector4d& pl, double x, double y) {
   return -(pl[0] * x + pl[1] * y + pl[3]) / pl[2];
 }
@@ -183,7 +172,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     std::vector<Eigen::Vector3d> samples;
     for (double y = y0 + 0.5 * o.spacing_m; y < y1; y += o.spacing_m)
       for (double x = x0 + 0.5 * o.spacing_m; x < x1; x += o.spacing_m)
-        if (InsideConvexRing(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
+        if (InsideConvex(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
     const Scores at = ScorePlane(block, grey, samples, p.plane, o);
     v.samples = at.n;
     if (at.n < o.min_samples) {

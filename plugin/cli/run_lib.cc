@@ -3,9 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
-#include <cstdarg>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -13,10 +11,12 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
+#include "algorithms/core/format.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/sweep/sweep_half_planes.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/ogr_citymodel.h"
+#include "io/citymodel/output_file.h"
 #include "io/citymodel/reproject.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
@@ -31,21 +31,6 @@ using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-std::string Str(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string Str(const char* fmt, ...) {
-  char buf[300];
-  va_list ap;
-  va_start(ap, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, ap);
-  va_end(ap);
-  return buf;
-}
-
-void RefuseExisting(const std::string& path, bool overwrite) {
-  if (!path.empty() && !overwrite && std::filesystem::exists(path))
-    throw Error(path + ": output exists (use -overwrite to replace it)");
 }
 
 // The reason of a rejection without its numbers, to count them by kind.
@@ -70,13 +55,13 @@ void WriteReport(const std::string& path, const RunSummary& s) {
     j["stages"].push_back({{"stage", st.name}, {"result", st.result}, {"seconds", st.seconds}});
   j["rejected"] = s.rejected;
   j["messages"] = s.messages;
-  const std::string tmp = path + ".tmp";
+  OutputFile file(path, /*overwrite=*/true);  // refused earlier if it existed without -overwrite
   {
-    std::ofstream f(tmp);
+    std::ofstream f(file.temp_path());
     f << j.dump(2) << "\n";
     if (!f) throw Error(path + ": cannot write the report");
   }
-  std::filesystem::rename(tmp, path);
+  file.Commit();
 }
 
 }  // namespace
@@ -85,7 +70,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   if (r.output.empty())
     throw Error(std::string(r.stop_after_sweep ? "sweep" : "run") + ": no output file given (-o)");
   for (const std::string& p : {r.output, r.lines3d, r.half_planes, r.report})
-    RefuseExisting(p, r.overwrite);
+    if (!p.empty()) CheckOutputPath(p, r.overwrite);
   if (!r.stop_after_sweep) ResolveCityModelFormat(r.output, r.format);  // fail early
   RunSummary out;
 
@@ -98,7 +83,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   std::vector<cv::Mat> images(block.views.size());
   tbb::parallel_for(size_t{0}, images.size(),
                     [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
-  out.stages.push_back({"read", Str("%zu images", images.size()), Since(t0)});
+  out.stages.push_back({"read", StrFormat("%zu images", images.size()), Since(t0)});
 
   // Lines and matching: 0 .. 35 %; sweep: 35 .. 95 %.
   t0 = Clock::now();
@@ -109,7 +94,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     out.messages = matched.messages;
     out.stages.push_back(
         {"segments + 3D lines",
-         Str("%lld segments, %zu 3D lines", matched.funnel.segments, matched.lines.size()),
+         StrFormat("%lld segments, %zu 3D lines", matched.funnel.segments, matched.lines.size()),
          Since(t0)});
   } else {
     const SegmentSet given = ReadSegments(r.lines_in);
@@ -121,9 +106,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       l.segment = {frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)};
       matched.lines.push_back(std::move(l));
     }
-    out.stages.push_back({"3D lines read",
-                          Str("%zu 3D lines from %s", matched.lines.size(), r.lines_in.c_str()),
-                          Since(t0)});
+    out.stages.push_back(
+        {"3D lines read",
+         StrFormat("%zu 3D lines from %s", matched.lines.size(), r.lines_in.c_str()), Since(t0)});
   }
   out.lines = static_cast<int>(matched.lines.size());
   if (!r.lines3d.empty()) {
@@ -169,8 +154,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   out.sides = static_cast<int>(hps.size());
   for (const HalfPlane& h : hps) out.accepted += h.accepted;
   out.stages.push_back({"half-plane sweep",
-                        Str("%d sides, %d accepted (%d lines near the ground)", out.sides,
-                            out.accepted, near_ground),
+                        StrFormat("%d sides, %d accepted (%d lines near the ground)", out.sides,
+                                  out.accepted, near_ground),
                         Since(t0)});
 
   const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
@@ -209,7 +194,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     lo.description = "roofsweep half-planes (Baillard & Zisserman 2000, section 3)";
     WriteFeatureLayer(half_plane_path, "half_planes", LayerGeometry::kMultiPolygonZ, features, lo);
     if (r.stop_after_sweep)
-      out.stages.push_back({"write", Str("%zu half-planes", features.size()), Since(t0)});
+      out.stages.push_back({"write", StrFormat("%zu half-planes", features.size()), Since(t0)});
   }
   if (r.stop_after_sweep) {
     if (!r.report.empty()) WriteReport(r.report, out);
@@ -223,7 +208,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   int candidates = 0;
   for (const HalfPlane& h : hps) candidates += h.candidate;
   out.stages.push_back({"grouping into planes",
-                        Str("%d planes from %d candidate sides", out.planes, candidates),
+                        StrFormat("%d planes from %d candidate sides", out.planes, candidates),
                         Since(t0)});
 
   // §5: every plane's patch verified against all views that see it, then
@@ -248,8 +233,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping.max_overlap);
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
     out.stages.push_back({"verification",
-                          Str("%zu of %zu planes confirmed, %zu left after conflicts", n_verified,
-                              roof_planes.size(), verified.size()),
+                          StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
+                                    n_verified, roof_planes.size(), verified.size()),
                           Since(t0)});
     roof_planes = std::move(verified);
   }
@@ -259,8 +244,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   out.buildings = static_cast<int>(assembled.model.buildings.size());
   out.stages.push_back({"LoD2 buildings",
-                        Str("%d of %d hypotheses, %d planes used", out.buildings,
-                            assembled.hypotheses, assembled.planes_used),
+                        StrFormat("%d of %d hypotheses, %d planes used", out.buildings,
+                                  assembled.hypotheses, assembled.planes_used),
                         Since(t0)});
 
   t0 = Clock::now();
@@ -278,7 +263,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   wo.format = r.format;
   wo.overwrite = r.overwrite;
   WriteCityModel(model, r.output, wo);
-  out.stages.push_back({"write", Str("%d buildings", out.buildings), Since(t0)});
+  out.stages.push_back({"write", StrFormat("%d buildings", out.buildings), Since(t0)});
   if (!r.report.empty()) WriteReport(r.report, out);
   progress.Update(1.0, "done");
   return out;
@@ -287,18 +272,18 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
 std::string FormatRunSummary(const RunSummary& s) {
   std::ostringstream o;
   for (const std::string& m : s.messages) o << m << "\n";
-  o << Str("%-22s %-44s %9s\n", "stage", "result", "time (s)");
+  o << StrFormat("%-22s %-44s %9s\n", "stage", "result", "time (s)");
   double total = 0;
   for (const RunStage& st : s.stages) {
-    o << Str("%-22s %-44s %9.2f\n", st.name.c_str(), st.result.c_str(), st.seconds);
+    o << StrFormat("%-22s %-44s %9.2f\n", st.name.c_str(), st.result.c_str(), st.seconds);
     total += st.seconds;
   }
-  o << Str("%-22s %-44s %9.2f\n", "total", "", total);
+  o << StrFormat("%-22s %-44s %9.2f\n", "total", "", total);
   if (!s.rejected.empty()) {
     std::map<std::string, int> kinds;
     for (const std::string& r : s.rejected) ++kinds[ReasonKind(r)];
     o << "Not built (" << s.rejected.size() << "; -report FILE lists each):\n";
-    for (const auto& [k, n] : kinds) o << Str("  %5d  %s\n", n, k.c_str());
+    for (const auto& [k, n] : kinds) o << StrFormat("  %5d  %s\n", n, k.c_str());
   }
   return o.str();
 }
