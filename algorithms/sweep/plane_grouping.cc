@@ -1,6 +1,5 @@
 #include "algorithms/sweep/plane_grouping.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +7,7 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/sweep/half_plane_family.h"
+#include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
 namespace {
@@ -18,33 +18,6 @@ double Reliability(const HalfPlane& h) {
   // Both of the paper's indicators: a high, sharp maximum; half-planes
   // passing the paper's own test come first.
   return (h.accepted ? 1.0 : 0.0) + h.similarity * std::min(1.0, -h.curvature / 8.0);
-}
-
-double Distance(const Eigen::Vector4d& plane, const Eigen::Vector3d& x) {
-  return std::abs(plane.head<3>().dot(x) + plane[3]);
-}
-
-struct WeightedPoint {
-  Eigen::Vector3d x;
-  double w;
-};
-
-// Total least squares plane through weighted points; keeps `fallback` when
-// the points do not span a plane (one line, or collinear lines).
-Eigen::Vector4d FitPlane(const std::vector<WeightedPoint>& pts, const Eigen::Vector4d& fallback) {
-  double sw = 0;
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (const auto& p : pts) sw += p.w, c += p.w * p.x;
-  if (sw <= 0) return fallback;
-  c /= sw;
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const auto& p : pts) cov += p.w * (p.x - c) * (p.x - c).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov / sw);
-  const Eigen::Vector3d ev = es.eigenvalues();  // ascending
-  if (!(ev[1] > 1e-4 * std::max(ev[2], 1e-12))) return fallback;
-  Eigen::Vector3d n = es.eigenvectors().col(0);
-  if (n.z() < 0) n = -n;
-  return {n.x(), n.y(), n.z(), -n.dot(c)};
 }
 
 }  // namespace
@@ -94,8 +67,8 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
       const PlaneGroup& g = work[k].g;
       const double c = g.plane.head<3>().dot(h.plane.head<3>());
       if (c < best_cos) continue;
-      if (Distance(g.plane, line.segment.a) > o.max_distance_m ||
-          Distance(g.plane, line.segment.b) > o.max_distance_m)
+      if (PlaneDistance(g.plane, line.segment.a) > o.max_distance_m ||
+          PlaneDistance(g.plane, line.segment.b) > o.max_distance_m)
         continue;
       if (ConvexDistance(g.patch, rect) > o.max_gap_m) continue;
       best = static_cast<int>(k);

@@ -23,11 +23,19 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, bool* init_best_out) {
       .Option("-min_curvature", &r.sweep.min_curvature, "C",
               "... and |Sim''| >= C per rad^2 (default 4.0)")
       .Option("-band_width", &r.sweep.band_width_px, "PX",
-              "neighbourhood of a line side in the reference view (default 100)");
+              "neighbourhood of a line side in the reference view (default 100)")
+      .Option(
+          "-verify_score", &r.verify.min_score, "S",
+          "a roof plane's patch must correlate with mean Cor+ >= S over the views (default 0.3)")
+      .Option("-verify_margin", &r.verify.min_margin, "S",
+              "... and beat the plane moved up and down by S (default 0.1)")
+      .Option("-verify_samples", &r.verify.min_samples, "N",
+              "... over at least N textured samples (default 32)");
 }
 
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
+  bool sweep_only = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -48,12 +56,15 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-min_height", &r.assembly.min_height_m, "M",
               "lowest roof plane above the ground (default 2.5)")
       .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",
-              "steepest roof plane (default 70)");
+              "steepest roof plane (default 70)")
+      .Flag("-sweep_planes_only", &sweep_only,
+            "planes from the sweep only, not also from pairs of coplanar lines");
   bool init_best = false;
   AddProcessingOptions(p, r, &init_best);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite");
   if (!p.Parse(args)) return 0;
+  r.line_planes = !sweep_only;
   r.match.init_from_best_correlation = init_best;
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {

@@ -203,13 +203,23 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   }
 
   t0 = Clock::now();
-  const GroupingResult grouped = GroupHalfPlanes(lines, hps, r.grouping);
-  out.planes = static_cast<int>(grouped.planes.size());
+  GroupingResult grouped = GroupHalfPlanes(lines, hps, r.grouping);
+  const int swept_planes = static_cast<int>(grouped.planes.size());
   int candidates = 0;
   for (const HalfPlane& h : hps) candidates += h.candidate;
-  out.stages.push_back({"grouping into planes",
-                        StrFormat("%d planes from %d candidate sides", out.planes, candidates),
-                        Since(t0)});
+  int pair_planes = 0, attached = 0;
+  if (r.line_planes) {
+    std::vector<PlaneGroup> pairs = PlanesFromLinePairs(lines, &grouped.planes, r.coplanar);
+    pair_planes = static_cast<int>(pairs.size());
+    for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
+    attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar);
+  }
+  out.planes = static_cast<int>(grouped.planes.size());
+  out.stages.push_back(
+      {"grouping into planes",
+       StrFormat("%d planes from %d candidate sides, %d from line pairs, %d lines joined",
+                 swept_planes, candidates, pair_planes, attached),
+       Since(t0)});
 
   // §5: every plane's patch verified against all views that see it, then
   // conflicts resolved by the verified evidence (patch area x score).

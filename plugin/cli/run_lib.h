@@ -7,6 +7,7 @@
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
 #include "algorithms/matching/match_options.h"
+#include "algorithms/sweep/coplanar_lines.h"
 #include "algorithms/sweep/plane_grouping.h"
 #include "algorithms/sweep/sweep_options.h"
 #include "algorithms/sweep/verify_planes.h"
@@ -31,6 +32,11 @@ struct RunRequest {
   MatchOptions match;
   SweepOptions sweep;
   GroupingOptions grouping;
+  // Planes also from pairs of coplanar lines and every coplanar line joined
+  // to its plane (§4 and §7 of Baillard & Zisserman); false: the sweep's
+  // planes only.
+  bool line_planes = true;
+  CoplanarOptions coplanar;
   VerifyOptions verify;
   AssemblyOptions assembly;
 };

@@ -1,0 +1,71 @@
+#pragma once
+
+#include <vector>
+
+#include "algorithms/sweep/plane_grouping.h"
+#include "algorithms/sweep/sweep_half_planes.h"
+
+namespace roofsweep {
+
+// Plane hypotheses from the 3D lines themselves, beside those the sweep
+// gives. Baillard & Zisserman 2000 §4 associate "any line which is
+// neighbouring and coplanar with the current plane" with it, and §7 call
+// for combining their one-line method with the classical grouping of two
+// neighbouring coplanar lines (Bignone et al. 1996, Moons et al. 1998): a
+// face whose half-planes the sweep could not confirm (weak texture, small
+// baselines) is still proposed when two of its edges were matched. Every
+// such hypothesis goes through the §5 photometric verification like the
+// sweep's. Lengths in metres.
+struct CoplanarOptions {
+  // A line lies on a plane when both end points are within max_distance_m
+  // of it. Joining a plane may not turn it by more than max_angle_deg (the
+  // paper's rule against short or nearby lines).
+  double max_distance_m = 0.25;
+  double max_angle_deg = 5.0;
+  // A line joins a plane whose patch it comes within max_gap_m of in plan
+  // (the sweep's support often stops short of the eave).
+  double max_gap_m = 2.0;
+  // Lines shorter than this are not used (too short to fix a plane).
+  double min_line_length_m = 1.5;
+  // Two non-parallel lines make a plane when they meet: their closest
+  // points are within max_distance_m in 3D and within junction_gap_m of
+  // both segments (lines stop short of junctions). Two parallel lines
+  // (within parallel_angle_deg) make one when they overlap by at least
+  // min_overlap of the shorter and lie min_pair_distance_m to
+  // max_pair_distance_m apart in plan (a roof face's width), with no third
+  // long parallel line between them (the ridge between two eaves, the
+  // inner verges between the verges of two neighbouring houses).
+  double junction_gap_m = 1.5;
+  double parallel_angle_deg = 5.0;
+  double min_junction_angle_deg = 20.0;
+  double min_overlap = 0.5;
+  double min_pair_distance_m = 1.0;
+  double max_pair_distance_m = 15.0;
+  double max_slope_deg = 70.0;
+  double min_area_m2 = 2.0;
+  // A hypothesis is refused when other lines run over its patch off the
+  // plane by more than crossing_offset_m for at least crossing_fraction of
+  // the longest line in all (and at least crossing_min_m): the ridge and
+  // hips above the plane through two eaves. Dormers are shorter.
+  double crossing_offset_m = 0.5;
+  double crossing_fraction = 0.5;
+  double crossing_min_m = 3.0;
+};
+
+// Adds to `planes` every line that is coplanar with a plane and within
+// max_gap_m of its patch; refits the plane by orthogonal regression over
+// its lines (the previous plane as a weak prior at its patch corners) and
+// grows the patch by the line. Lines in `planes` index `lines`. Returns the
+// number of lines attached. Deterministic.
+int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGroup>* planes,
+                        const CoplanarOptions& options = {});
+
+// Plane hypotheses from pairs of neighbouring coplanar lines (see
+// CoplanarOptions). One that is coplanar with another or with one of
+// `existing` and overlaps it by min_overlap of the smaller patch is the
+// same face: its lines join that plane instead. Deterministic.
+std::vector<PlaneGroup> PlanesFromLinePairs(const std::vector<SweepLine>& lines,
+                                            std::vector<PlaneGroup>* existing,
+                                            const CoplanarOptions& options = {});
+
+}  // namespace roofsweep
