@@ -143,6 +143,23 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   return rejected;
 }
 
+std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes, int min_lines) {
+  std::vector<std::string> reasons;
+  std::vector<PlaneGroup> kept;
+  for (PlaneGroup& g : *planes) {
+    if (static_cast<int>(g.lines.size()) < min_lines) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "plane of line %d: %zu supporting line(s) < %d",
+                    g.lines.empty() ? -1 : g.lines[0], g.lines.size(), min_lines);
+      reasons.push_back(buf);
+      continue;
+    }
+    kept.push_back(std::move(g));
+  }
+  *planes = std::move(kept);
+  return reasons;
+}
+
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups) {
   std::vector<RoofPlaneHypothesis> out;
   for (size_t k = 0; k < groups.size(); ++k) {

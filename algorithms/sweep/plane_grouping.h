@@ -27,6 +27,11 @@ struct GroupingOptions {
   // both be roof (coplanar ones were merged by the grouping); the one with
   // the lower score is dropped.
   double max_overlap = 0.5;
+  // §5: "at least two lines (one of them can be virtual) are required to
+  // accept a plane", an efficient culling of erroneous one-line half-planes
+  // (tree crowns, shadows). Applied by DropWeaklySupported after the
+  // coplanar lines have joined.
+  int min_lines = 2;
 };
 
 // A plane with the half-planes and lines that support it.
@@ -59,6 +64,10 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 // kept one's by more than max_overlap is dropped. Returns the reasons.
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           double max_overlap);
+
+// Removes the planes with fewer than min_lines distinct lines; returns one
+// reason per removed plane.
+std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes, int min_lines);
 
 // The groups as the building assembly takes them.
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups);

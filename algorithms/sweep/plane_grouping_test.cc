@@ -103,3 +103,21 @@ TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
 
 }  // namespace
 }  // namespace roofsweep
+
+namespace roofsweep {
+namespace {
+
+TEST(PlaneGrouping, PlanesNeedTwoLines) {
+  std::vector<PlaneGroup> planes(3);
+  planes[0].lines = {4};
+  planes[1].lines = {1, 2};
+  planes[2].lines = {};
+  const std::vector<std::string> reasons = DropWeaklySupported(&planes, 2);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].lines, (std::vector<int>{1, 2}));
+  ASSERT_EQ(reasons.size(), 2u);
+  EXPECT_NE(reasons[0].find("plane of line 4: 1 supporting line(s) < 2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace roofsweep

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 #include <opencv2/imgproc.hpp>
 
 #include "algorithms/buildings/convex_polygon2.h"
@@ -69,7 +70,15 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
   const int r = o.ncc_radius, w = 2 * r + 1;
   const int n_views = static_cast<int>(block.views.size());
   std::vector<float> ref(w * w), other(w * w);
-  for (const Eigen::Vector3d& X0 : samples) {
+  // Beyond a few hundred textured samples the mean no longer changes, only
+  // the time: the samples are visited in a scattered order (a stride of
+  // about 0.618 n, coprime to n) so that the first max_samples textured
+  // ones spread over the whole patch.
+  const size_t n_samples = samples.size();
+  size_t stride = std::max<size_t>(1, static_cast<size_t>(0.618034 * n_samples));
+  while (n_samples > 1 && std::gcd(stride, n_samples) != 1) ++stride;
+  for (size_t j = 0; j < n_samples && s.n < o.max_samples; ++j) {
+    const Eigen::Vector3d& X0 = samples[(j * stride) % n_samples];
     const Eigen::Vector3d X(X0.x(), X0.y(), PlaneZ(pl, X0.x(), X0.y()));
     // Reference: the view whose centre is nearest in plan (least
     // perspective distortion of the roof).
@@ -169,13 +178,9 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     for (const auto& q : p.patch)
       x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
       y1 = std::max(y1, q.y());
-    // Large patches are sampled more sparsely: beyond a few hundred samples
-    // the mean score no longer changes, only the time.
-    const double step = std::max(
-        o.spacing_m, std::sqrt(std::abs(SignedArea(p.patch)) / std::max(1, o.max_samples)));
     std::vector<Eigen::Vector3d> samples;
-    for (double y = y0 + 0.5 * step; y < y1; y += step)
-      for (double x = x0 + 0.5 * step; x < x1; x += step)
+    for (double y = y0 + 0.5 * o.spacing_m; y < y1; y += o.spacing_m)
+      for (double x = x0 + 0.5 * o.spacing_m; x < x1; x += o.spacing_m)
         if (InsideConvex(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
     const Scores at = ScorePlane(block, grey, samples, p.plane, o);
     v.samples = at.n;

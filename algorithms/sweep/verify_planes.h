@@ -13,8 +13,8 @@ namespace roofsweep {
 // Options of the photometric verification of plane patches (Baillard &
 // Zisserman 2000, §5: "patch verification over all views by correlation").
 struct VerifyOptions {
-  // Samples on a plan-view grid of this spacing (m) inside the patch, or
-  // wider on patches that would get more than max_samples.
+  // Samples on a plan-view grid of this spacing (m) inside the patch; at
+  // most max_samples textured ones, spread over the patch, are scored.
   double spacing_m = 0.25;
   int max_samples = 400;
   // Correlation window (2 r + 1)^2 in the reference view, mapped pixel by

@@ -214,11 +214,16 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
     attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar);
   }
+  const std::vector<std::string> one_line =
+      DropWeaklySupported(&grouped.planes, r.grouping.min_lines);
+  out.rejected.insert(out.rejected.end(), one_line.begin(), one_line.end());
   out.planes = static_cast<int>(grouped.planes.size());
   out.stages.push_back(
       {"grouping into planes",
-       StrFormat("%d planes from %d candidate sides, %d from line pairs, %d lines joined",
-                 swept_planes, candidates, pair_planes, attached),
+       StrFormat("%d planes from %d candidate sides, %d from line pairs, %d lines joined, %zu "
+                 "with fewer than %d lines dropped",
+                 swept_planes, candidates, pair_planes, attached, one_line.size(),
+                 r.grouping.min_lines),
        Since(t0)});
 
   // §5: every plane's patch verified against all views that see it, then
