@@ -15,8 +15,8 @@ namespace roofsweep {
 //   Sim(theta) = sum_i sum_x w(x) Cor+(x, H^i(theta) x)^2 / (n sum_x w(x)),
 // over the n views i other than the reference and the active points of
 // interest x of the reference, w(x) = 1 / max(1 px, distance to the line),
-// Cor+ = max(0, NCC) on the grey images over a (2 r + 1)^2 window whose
-// pixels are mapped one by one through H^i (no affine approximation).
+// Cor+ = max(0, NCC) on the grey images over a (2 r + 1)^2 window mapped
+// through H^i exactly at its centre and edge midpoints, affinely in between.
 // Anti-correlation is clamped to 0 (the paper squares Cor, which would
 // reward a contrast-inverted match). Points that map outside view i or
 // behind a camera score 0 there but keep their weight, so Sim stays in
@@ -66,6 +66,7 @@ class SideSimilarity {
   std::vector<bool> active_;
   std::vector<bool> active_views_;
   int window_size_;
+  int radius_ = 0;
 };
 
 // Bilinear sample of a CV_32F image at array coordinates (pixel centre of
