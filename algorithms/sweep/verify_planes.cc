@@ -126,14 +126,32 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
       const int v = seen[i].first;
       const Camera& cam = block.CameraOf(block.views[v]);
       const Pose& pose = block.views[v].pose;
-      double m2 = 0;
+      // Exact at the centre and edge midpoints, affine in between (as in
+      // the sweep's SideSimilarity).
+      const int c = (w * w) / 2;
+      const int probe[5] = {c, c - r, c + r, c - r * w, c + r * w};
+      Eigen::Vector2d q[5];
       bool inside = true;
-      for (int k = 0; k < w * w && inside; ++k) {
-        const auto p = Project(cam, pose, lifted[k]);
-        float val;
-        inside = p && SampleBilinear(grey[v], p->x() - 0.5, p->y() - 0.5, &val);
-        if (inside) other[k] = val, m2 += val;
+      for (int j = 0; j < 5 && inside; ++j) {
+        const auto p = Project(cam, pose, lifted[probe[j]]);
+        inside = p.has_value();
+        if (inside) q[j] = *p;
       }
+      if (!inside) continue;
+      const Eigen::Vector2d jx =
+          r > 0 ? Eigen::Vector2d((q[2] - q[1]) / (2.0 * r)) : Eigen::Vector2d(0, 0);
+      const Eigen::Vector2d jy =
+          r > 0 ? Eigen::Vector2d((q[4] - q[3]) / (2.0 * r)) : Eigen::Vector2d(0, 0);
+      const Eigen::Vector2d origin = q[0] - r * (jx + jy) - Eigen::Vector2d(0.5, 0.5);
+      double m2 = 0;
+      for (int dy = 0, k = 0; dy < w && inside; ++dy)
+        for (int dx = 0; dx < w; ++dx, ++k) {
+          const Eigen::Vector2d at = origin + dy * jy + dx * jx;
+          float val;
+          inside = SampleBilinear(grey[v], at.x(), at.y(), &val);
+          if (!inside) break;
+          other[k] = val, m2 += val;
+        }
       if (!inside) continue;
       m2 /= w * w;
       double sxy = 0, syy = 0;
