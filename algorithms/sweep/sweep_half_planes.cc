@@ -162,8 +162,11 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
     return hp;
   }
   const double t_min = o.theta_min_deg * kDeg, t_max = o.theta_max_deg * kDeg;
-  const double step = o.coarse_step_deg * kDeg;
-  const int samples = std::max(2, static_cast<int>(std::floor((t_max - t_min) / step + 1e-9)) + 1);
+  // The coarse grid spans the whole range, ends included, at no more than
+  // the coarse step.
+  const int samples = std::max(
+      2, static_cast<int>(std::ceil((t_max - t_min) / (o.coarse_step_deg * kDeg) - 1e-9)) + 1);
+  const double step = (t_max - t_min) / (samples - 1);
   hp.profile.resize(samples);
   // The coarse sweep only has to find the peak's bracket: an even subset of
   // the points does (Sim is a mean over points), at a fraction of the cost.

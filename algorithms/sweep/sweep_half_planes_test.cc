@@ -64,7 +64,11 @@ TEST(SweepHalfPlanes, GableRidgeFindsBothPitches) {
     EXPECT_LE(h.curvature, -4.0);
     EXPECT_EQ(h.views, 3);
     EXPECT_GE(h.points, 20);
-    EXPECT_EQ(h.profile.size(), 76u);
+    // One Sim value per coarse angle over the swept range, both ends
+    // included, at most coarse_step_deg apart.
+    const SweepOptions o;
+    const double range = o.theta_max_deg - o.theta_min_deg;
+    EXPECT_EQ(h.profile.size(), static_cast<size_t>(std::ceil(range / o.coarse_step_deg)) + 1);
     // The plane agrees with theta and contains the line.
     EXPECT_NEAR(h.plane.head<3>().dot(kRidge.a) + h.plane(3), 0, 1e-9);
   }
