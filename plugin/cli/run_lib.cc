@@ -212,8 +212,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<PlaneGroup> pairs = PlanesFromLinePairs(lines, &grouped.planes, r.coplanar);
     pair_planes = static_cast<int>(pairs.size());
     for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
-    attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar);
   }
+  attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar);
   const std::vector<std::string> one_line =
       DropWeaklySupported(&grouped.planes, r.grouping.min_lines);
   out.rejected.insert(out.rejected.end(), one_line.begin(), one_line.end());

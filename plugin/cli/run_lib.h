@@ -32,9 +32,9 @@ struct RunRequest {
   MatchOptions match;
   SweepOptions sweep;
   GroupingOptions grouping;
-  // Planes also from pairs of coplanar lines and every coplanar line joined
-  // to its plane (§4 and §7 of Baillard & Zisserman); false: the sweep's
-  // planes only.
+  // Planes also from pairs of coplanar lines (§7 of Baillard & Zisserman);
+  // false: the sweep's planes only. Either way every coplanar line joins
+  // its plane (§4).
   bool line_planes = true;
   CoplanarOptions coplanar;
   VerifyOptions verify;
