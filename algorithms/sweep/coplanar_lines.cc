@@ -27,10 +27,8 @@ Eigen::Vector4d Refit(const std::vector<SweepLine>& lines, const PlaneGroup& g) 
     pts.push_back({lines[l].segment.a, 1.0});
     pts.push_back({lines[l].segment.b, 1.0});
   }
-  for (const Eigen::Vector2d& p : g.patch) {
-    const Eigen::Vector4d& pl = g.plane;
-    pts.push_back({{p.x(), p.y(), -(pl[0] * p.x() + pl[1] * p.y() + pl[3]) / pl[2]}, 0.25});
-  }
+  for (const Eigen::Vector2d& p : g.patch)
+    pts.push_back({{p.x(), p.y(), PlaneZ(g.plane, p.x(), p.y())}, 0.25});
   return FitPlane(pts, g.plane);
 }
 
@@ -131,8 +129,6 @@ bool PairPlane(const std::vector<SweepLine>& lines, int i, int j, const Coplanar
   out->lines = {i, j};
   out->patch = ConvexHull(corners);
   out->longest_line_m = std::max(a.Length(), b.Length());
-  out->half_planes.clear();
-  out->similarity = 0;
   out->score = std::abs(SignedArea(out->patch));
   return out->score >= o.min_area_m2;
 }

@@ -15,6 +15,31 @@ bool SampleBilinear(const cv::Mat& image, double x, double y, float* value) {
   return true;
 }
 
+std::array<int, 5> AffineWindow::Probes(int r) {
+  const int w = 2 * r + 1, c = (w * w) / 2;
+  return {c, c - r, c + r, c - r * w, c + r * w};
+}
+
+AffineWindow::AffineWindow(const std::array<Eigen::Vector2d, 5>& q, int r) : r_(r) {
+  dx_ = r > 0 ? Eigen::Vector2d((q[2] - q[1]) / (2.0 * r)) : Eigen::Vector2d(0, 0);
+  dy_ = r > 0 ? Eigen::Vector2d((q[4] - q[3]) / (2.0 * r)) : Eigen::Vector2d(0, 0);
+  // SampleBilinear puts pixel centres at integers.
+  origin_ = q[0] - r * (dx_ + dy_) - Eigen::Vector2d(0.5, 0.5);
+}
+
+bool AffineWindow::Sample(const cv::Mat& image, float* values, double* sum) const {
+  *sum = 0;
+  for (int iy = 0, k = 0; iy <= 2 * r_; ++iy) {
+    const Eigen::Vector2d row = origin_ + iy * dy_;
+    for (int ix = 0; ix <= 2 * r_; ++ix, ++k) {
+      const Eigen::Vector2d at = row + ix * dx_;
+      if (!SampleBilinear(image, at.x(), at.y(), &values[k])) return false;
+      *sum += values[k];
+    }
+  }
+  return true;
+}
+
 SideSimilarity::SideSimilarity(const Block& block, const std::vector<ViewTexture>& textures,
                                const HalfPlaneFamily& family, int reference_view,
                                const std::vector<int>& other_views,
@@ -114,37 +139,18 @@ double SideSimilarity::Evaluate(double theta, std::vector<double>* per_point,
     for (size_t vi = 0; vi < views_.size(); ++vi) {
       if (!per_view && !active_views_[vi]) continue;
       const OtherView& o = views_[vi];
-      // The homography is mapped exactly at the window's centre and the
-      // midpoints of its edges, and affinely in between: over a 7 px window
-      // at aerial distances the second-order terms stay far below 0.01 px,
-      // and this is the sweep's innermost loop.
+      // Exactly at five pixels, affinely in between (AffineWindow): this is
+      // the sweep's innermost loop.
+      const std::array<int, 5> probe = AffineWindow::Probes(radius_);
+      std::array<Eigen::Vector2d, 5> q;
       bool inside = true;
-      Eigen::Vector2d q[5];
-      const int c = window_size_ / 2, w = radius_;
-      const int probe[5] = {c, c - w, c + w, c - w * (2 * w + 1), c + w * (2 * w + 1)};
       for (int j = 0; j < 5 && inside; ++j) {
         const Eigen::Vector3d y = H[vi] * p.window[probe[j]];
         inside = y.z() > 0;
         if (inside) q[j] = MeasuredPixel(*o.camera, y.head<2>() / y.z());
       }
-      if (!inside) continue;
-      const Eigen::Vector2d jx =
-          w > 0 ? Eigen::Vector2d((q[2] - q[1]) / (2.0 * w)) : Eigen::Vector2d(0, 0);
-      const Eigen::Vector2d jy =
-          w > 0 ? Eigen::Vector2d((q[4] - q[3]) / (2.0 * w)) : Eigen::Vector2d(0, 0);
-      const Eigen::Vector2d origin = q[0] - w * (jx + jy) - Eigen::Vector2d(0.5, 0.5);
       double mean = 0;
-      for (int dy = 0, k = 0; dy <= 2 * w && inside; ++dy) {
-        const Eigen::Vector2d row = origin + dy * jy;
-        for (int dx = 0; dx <= 2 * w; ++dx, ++k) {
-          const Eigen::Vector2d at = row + dx * jx;
-          if (!SampleBilinear(*o.grey, at.x(), at.y(), &samples[k])) {
-            inside = false;
-            break;
-          }
-          mean += samples[k];
-        }
-      }
+      inside = inside && AffineWindow(q, radius_).Sample(*o.grey, samples.data(), &mean);
       if (!inside) continue;
       mean /= window_size_;
       double dot = 0, ss = 0;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "algorithms/geometry/block.h"
@@ -72,5 +73,27 @@ class SideSimilarity {
 // Bilinear sample of a CV_32F image at array coordinates (pixel centre of
 // (0, 0) at 0, 0); false outside [0, cols - 1] x [0, rows - 1].
 bool SampleBilinear(const cv::Mat& image, double x, double y, float* value);
+
+// A (2 r + 1)^2 correlation window (row-major, top-left first) mapped into
+// another image exactly at its centre and edge midpoints and affinely in
+// between: over a 7 px window at aerial distances the second-order terms
+// of a homography or a camera projection stay far below 0.01 px, and
+// mapping every pixel exactly was the sweep's innermost cost.
+class AffineWindow {
+ public:
+  // Window indices of the five pixels to map exactly: centre, left, right,
+  // top, bottom.
+  static std::array<int, 5> Probes(int r);
+  // `mapped`: the probes' measured pixel positions (pixel-centre convention
+  // of the images, as Project returns them).
+  AffineWindow(const std::array<Eigen::Vector2d, 5>& mapped, int r);
+  // Bilinear samples of the whole window into `values` ((2 r + 1)^2 of
+  // them) and their sum; false when a pixel falls outside the image.
+  bool Sample(const cv::Mat& image, float* values, double* sum) const;
+
+ private:
+  int r_;
+  Eigen::Vector2d origin_, dx_, dy_;
+};
 
 }  // namespace roofsweep

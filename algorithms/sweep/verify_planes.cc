@@ -11,14 +11,11 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/geometry/view.h"
+#include "algorithms/sweep/plane_fit.h"
 #include "algorithms/sweep/side_similarity.h"
 
 namespace roofsweep {
 namespace {
-
-double PlaneZ(const Eigen::Vector4d& pl, double x, double y) {
-  return -(pl[0] * x + pl[1] * y + pl[3]) / pl[2];
-}
 
 // Lifts a reference pixel onto the plane.
 bool OnPlane(const Camera& cam, const Pose& pose, const Eigen::Vector4d& pl,
@@ -126,32 +123,17 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
       const int v = seen[i].first;
       const Camera& cam = block.CameraOf(block.views[v]);
       const Pose& pose = block.views[v].pose;
-      // Exact at the centre and edge midpoints, affine in between (as in
-      // the sweep's SideSimilarity).
-      const int c = (w * w) / 2;
-      const int probe[5] = {c, c - r, c + r, c - r * w, c + r * w};
-      Eigen::Vector2d q[5];
+      // Exactly at five pixels, affinely in between, as in the sweep.
+      const std::array<int, 5> probe = AffineWindow::Probes(r);
+      std::array<Eigen::Vector2d, 5> q;
       bool inside = true;
       for (int j = 0; j < 5 && inside; ++j) {
         const auto p = Project(cam, pose, lifted[probe[j]]);
         inside = p.has_value();
         if (inside) q[j] = *p;
       }
-      if (!inside) continue;
-      const Eigen::Vector2d jx =
-          r > 0 ? Eigen::Vector2d((q[2] - q[1]) / (2.0 * r)) : Eigen::Vector2d(0, 0);
-      const Eigen::Vector2d jy =
-          r > 0 ? Eigen::Vector2d((q[4] - q[3]) / (2.0 * r)) : Eigen::Vector2d(0, 0);
-      const Eigen::Vector2d origin = q[0] - r * (jx + jy) - Eigen::Vector2d(0.5, 0.5);
       double m2 = 0;
-      for (int dy = 0, k = 0; dy < w && inside; ++dy)
-        for (int dx = 0; dx < w; ++dx, ++k) {
-          const Eigen::Vector2d at = origin + dy * jy + dx * jx;
-          float val;
-          inside = SampleBilinear(grey[v], at.x(), at.y(), &val);
-          if (!inside) break;
-          other[k] = val, m2 += val;
-        }
+      inside = inside && AffineWindow(q, r).Sample(grey[v], other.data(), &m2);
       if (!inside) continue;
       m2 /= w * w;
       double sxy = 0, syy = 0;
