@@ -7,8 +7,10 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/solid_check.h"
 #include "algorithms/core/format.h"
 
@@ -165,56 +167,303 @@ int ClassifyRoofType(const std::vector<Polygon3>& faces) {
   return roof_type::kCombination;
 }
 
-AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
-                                 const GroundModel& ground, const AssemblyOptions& o) {
-  AssemblyResult res;
-  res.planes_in = static_cast<int>(planes.size());
-  const int n = static_cast<int>(planes.size());
-  auto name = [&](int i) { return planes[i].id.empty() ? StrFormat("plane %d", i) : planes[i].id; };
+namespace {
 
-  // 1. Plausible roof planes.
+// Plausible roof planes of the input, with the reasons for the others.
+std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
+                                 const GroundModel& ground, const AssemblyOptions& o,
+                                 std::vector<std::string>* rejected) {
   std::vector<int> keep;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < static_cast<int>(planes.size()); ++i) {
     const RoofPlaneHypothesis& p = planes[i];
+    const std::string name = p.id.empty() ? StrFormat("plane %d", i) : p.id;
     const Eigen::Vector3d nrm = p.plane.head<3>();
     if (p.patch.size() < 3 || !(std::abs(SignedArea(p.patch)) > 0) || !nrm.allFinite() ||
         std::abs(nrm.norm() - 1) > 1e-6) {
-      res.rejected.push_back(name(i) + ": degenerate plane or patch");
+      rejected->push_back(name + ": degenerate plane or patch");
       continue;
     }
     if (p.longest_line_m < o.min_line_length_m) {
-      res.rejected.push_back(name(i) + StrFormat(": longest supporting line %.2f m < %.2f m",
-                                                 p.longest_line_m, o.min_line_length_m));
+      rejected->push_back(name + StrFormat(": longest supporting line %.2f m < %.2f m",
+                                           p.longest_line_m, o.min_line_length_m));
       continue;
     }
     const double slope = std::acos(std::clamp(nrm.z(), -1.0, 1.0)) / kDeg;
     if (slope > o.max_roof_slope_deg) {
-      res.rejected.push_back(name(i) + StrFormat(": slope %.1f deg > %.1f deg (a wall?)", slope,
-                                                 o.max_roof_slope_deg));
+      rejected->push_back(
+          name + StrFormat(": slope %.1f deg > %.1f deg (a wall?)", slope, o.max_roof_slope_deg));
       continue;
     }
     const Eigen::Vector2d c = Centroid(p.patch);
     const double g = ground.HeightAt(c.x(), c.y());
     if (!std::isfinite(g)) {
-      res.rejected.push_back(name(i) + ": no ground height there");
+      rejected->push_back(name + ": no ground height there");
       continue;
     }
     const double h = PlaneZ(p.plane, c) - g;
     if (h < o.min_height_m) {
-      res.rejected.push_back(name(i) +
-                             StrFormat(": %.2f m above the ground < %.2f m", h, o.min_height_m));
+      rejected->push_back(name +
+                          StrFormat(": %.2f m above the ground < %.2f m", h, o.min_height_m));
       continue;
     }
     keep.push_back(i);
   }
+  return keep;
+}
 
-  // 2. Buildings: patches that touch and whose planes meet there.
+Eigen::Vector4d Bounds(const Ring2& r) {
+  Eigen::Vector4d b(
+      std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+      -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+  for (const auto& p : r) {
+    b[0] = std::min(b[0], p.x()), b[1] = std::min(b[1], p.y());
+    b[2] = std::max(b[2], p.x()), b[3] = std::max(b[3], p.y());
+  }
+  return b;
+}
+
+bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
+}
+
+// Cuts every plane's patch at the footprints: one copy per footprint it
+// covers (a plane found across a row of terraced houses becomes one plane
+// per house), dropping planes that lie mostly outside every footprint.
+// `footprint_of` receives the footprint index of each output plane.
+std::vector<RoofPlaneHypothesis> CutAtFootprints(
+    const std::vector<RoofPlaneHypothesis>& planes, const std::vector<int>& keep,
+    const std::vector<Footprint>& footprints, const AssemblyOptions& o,
+    std::vector<int>* footprint_of, std::vector<int>* origin, std::vector<std::string>* rejected) {
+  std::vector<Eigen::Vector4d> bounds;
+  for (const Footprint& f : footprints) bounds.push_back(Bounds(f.outline));
+  std::vector<RoofPlaneHypothesis> out;
+  for (int i : keep) {
+    const RoofPlaneHypothesis& p = planes[i];
+    const std::string name = p.id.empty() ? StrFormat("plane %d", i) : p.id;
+    const double area = std::abs(SignedArea(p.patch));
+    const Eigen::Vector4d pb = Bounds(p.patch);
+    std::vector<std::pair<int, std::vector<Ring2>>> over;
+    double inside = 0;
+    for (size_t f = 0; f < footprints.size(); ++f) {
+      if (!BoundsMeet(pb, bounds[f])) continue;
+      std::vector<Ring2> pieces = IntersectPolygons(p.patch, footprints[f].outline);
+      double a = 0;
+      for (const Ring2& r : pieces) a += SignedArea(r);
+      inside += a;
+      if (a >= o.footprint_min_piece_m2) over.emplace_back(static_cast<int>(f), std::move(pieces));
+    }
+    if (inside < o.footprint_min_inside * area || over.empty()) {
+      rejected->push_back(name + StrFormat(": %.0f %% of its patch over a footprint < %.0f %%",
+                                           100 * inside / area, 100 * o.footprint_min_inside));
+      continue;
+    }
+    for (auto& [f, pieces] : over) {
+      RoofPlaneHypothesis q = p;
+      std::vector<Eigen::Vector2d> pts;
+      for (const Ring2& r : pieces) pts.insert(pts.end(), r.begin(), r.end());
+      q.patch = ConvexHull(pts);
+      if (over.size() > 1) q.id = name + " (footprint " + footprints[f].id + ")";
+      out.push_back(std::move(q));
+      footprint_of->push_back(f);
+      origin->push_back(i);
+    }
+  }
+  return out;
+}
+
+// The lower envelope of `active` over `outline` (any simple polygon), and
+// the face with the least evidence.
+struct Envelope {
+  Ring2 outline;
+  double ground_z = 0;
+  std::vector<std::vector<Ring2>> regions;  // pieces of each active plane's face
+  int worst = -1;                           // index into active; -1: every face is supported
+  std::string worst_reason;
+};
+
+Envelope LowerEnvelope(const std::vector<RoofPlaneHypothesis>& planes,
+                       const std::vector<int>& active, const Ring2& outline,
+                       const std::vector<Ring2>& grown, const GroundModel& ground,
+                       const AssemblyOptions& o, double min_support) {
+  Envelope e;
+  e.outline = outline;
+  e.ground_z = std::numeric_limits<double>::infinity();
+  for (const auto& p : outline) e.ground_z = std::min(e.ground_z, ground.HeightAt(p.x(), p.y()));
+  // The convex routines are exact on convex outlines (the usual case
+  // without footprints); a non-convex footprint is clipped by Boost.
+  const bool convex = IsConvexRing(outline);
+  const Ring2 hull = convex ? outline : ConvexHull(outline);
+  e.regions.assign(active.size(), {});
+  double worst_value = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < active.size(); ++k) {
+    const int i = active[k];
+    const Ring2 region = EnvelopeRegion(planes, active, i, hull);
+    double area = 0, seen = 0;
+    if (convex) {
+      if (!region.empty()) {
+        e.regions[k].push_back(region);
+        area = SignedArea(region);
+        const Ring2 inside = IntersectConvex(region, grown[i]);
+        seen = inside.empty() ? 0.0 : SignedArea(inside);
+      }
+    } else if (!region.empty()) {
+      e.regions[k] = IntersectPolygons(region, outline);
+      for (const Ring2& r : e.regions[k]) {
+        area += SignedArea(r);
+        seen += IntersectionArea(r, grown[i]);
+      }
+    }
+    const double support = area > 0 ? seen / area : 0.0;
+    double low = std::numeric_limits<double>::infinity();
+    for (const Ring2& r : e.regions[k])
+      for (const auto& p : r) low = std::min(low, PlaneZ(planes[i].plane, p));
+    // Rank failures by how little evidence the face has.
+    double value = std::numeric_limits<double>::infinity();
+    std::string why;
+    if (area < o.min_face_area_m2) {
+      value = area;
+      why = StrFormat(": roof face of %.2f m2 < %.2f m2 (%s)", area, o.min_face_area_m2,
+                      area == 0 ? "above the roof everywhere" : "sliver");
+    } else if (support < min_support) {
+      value = support;
+      why = StrFormat(": only %.0f %% of its roof face lies where the images saw the plane",
+                      100 * support);
+    } else if (low - e.ground_z < 0.5 * o.min_height_m) {
+      value = -1;  // a roof below the walls' minimum height is never right
+      why = StrFormat(": its roof face comes down to %.2f m above the ground", low - e.ground_z);
+    }
+    if (value < worst_value ||
+        (value == worst_value && e.worst >= 0 && planes[i].score < planes[active[e.worst]].score)) {
+      worst_value = value;
+      e.worst = static_cast<int>(k);
+      e.worst_reason = why;
+    }
+  }
+  if (e.worst_reason.empty()) e.worst = -1;
+  return e;
+}
+
+// The closed solid of one building from its envelope: roof faces, walls
+// from every outline edge down to the ground, a planar ground surface.
+Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::vector<int>& active,
+                    const Envelope& e, const AssemblyOptions& o) {
+  // Shared vertices: weld, then build faces from welded ids so that
+  // neighbouring faces and the walls use the very same coordinates.
+  Welder welder(o.weld_m);
+  std::vector<std::vector<std::vector<int>>> region_ids(active.size());
+  for (size_t k = 0; k < active.size(); ++k)
+    for (const Ring2& r : e.regions[k]) {
+      region_ids[k].emplace_back();
+      for (const auto& p : r) region_ids[k].back().push_back(welder.Add(p));
+    }
+  std::vector<int> outline_ids;
+  for (const auto& p : e.outline) outline_ids.push_back(welder.Add(p));
+  auto roof_z = [&](int id) {
+    double z = std::numeric_limits<double>::infinity();
+    for (int i : active) z = std::min(z, PlaneZ(planes[i].plane, welder.points()[id]));
+    return z;
+  };
+  auto top = [&](int id) {
+    const Eigen::Vector2d& p = welder.points()[id];
+    return Eigen::Vector3d(p.x(), p.y(), roof_z(id));
+  };
+
+  Building b;
+  double lines = 0, sim = 0, score = 0;
+  std::vector<Polygon3> roof_faces;
+  for (size_t k = 0; k < active.size(); ++k) {
+    bool used = false;
+    for (const std::vector<int>& ids : region_ids[k]) {
+      const std::vector<int> ring = CloseRing(welder, ids);
+      if (ring.size() < 3) continue;
+      Polygon3 poly;
+      for (int id : ring) poly.exterior.push_back(top(id));
+      roof_faces.push_back(poly);
+      used = true;
+    }
+    if (!used) continue;
+    const RoofPlaneHypothesis& p = planes[active[k]];
+    lines += p.lines;
+    sim += p.similarity;
+    score += p.score;
+  }
+  std::vector<Surface> walls;
+  const std::vector<int> ring = CloseRing(welder, outline_ids);
+  // Outline vertices in the welded ring order, for the walls' corners.
+  std::vector<size_t> corners;
+  for (size_t k = 0; k < ring.size(); ++k)
+    if (std::find(outline_ids.begin(), outline_ids.end(), ring[k]) != outline_ids.end())
+      corners.push_back(k);
+  for (size_t c = 0; c < corners.size(); ++c) {
+    const size_t from = corners[c], to = corners[(c + 1) % corners.size()];
+    std::vector<int> chain;
+    for (size_t k = from;; k = (k + 1) % ring.size()) {
+      chain.push_back(ring[k]);
+      if (k == to) break;
+    }
+    const Eigen::Vector2d& p = welder.points()[chain.front()];
+    const Eigen::Vector2d& q = welder.points()[chain.back()];
+    Polygon3 wall;
+    wall.exterior.emplace_back(p.x(), p.y(), e.ground_z);
+    wall.exterior.emplace_back(q.x(), q.y(), e.ground_z);
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) wall.exterior.push_back(top(*it));
+    walls.push_back({SurfaceType::kWall, "", {wall}});
+  }
+  Polygon3 floor;
+  for (auto it = corners.rbegin(); it != corners.rend(); ++it) {
+    const Eigen::Vector2d& p = welder.points()[ring[*it]];
+    floor.exterior.emplace_back(p.x(), p.y(), e.ground_z);
+  }
+  b.surfaces.push_back({SurfaceType::kGround, "", {floor}});
+  for (const Polygon3& r : roof_faces) b.surfaces.push_back({SurfaceType::kRoof, "", {r}});
+  for (Surface& w : walls) b.surfaces.push_back(std::move(w));
+  b.roof_type = ClassifyRoofType(roof_faces);
+  double top_z = -std::numeric_limits<double>::infinity();
+  for (const Polygon3& r : roof_faces)
+    for (const auto& v : r.exterior) top_z = std::max(top_z, v.z());
+  b.measured_height = top_z - e.ground_z;
+  b.double_attributes["roof_planes"] = static_cast<double>(roof_faces.size());
+  b.double_attributes["supporting_lines"] = lines;
+  b.double_attributes["photometric_score"] = roof_faces.empty() ? 0.0 : sim / roof_faces.size();
+  b.double_attributes["reliability"] = score;
+  b.double_attributes["footprint_m2"] = SignedArea(e.outline);
+  return b;
+}
+
+}  // namespace
+
+AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
+                                 const GroundModel& ground, const AssemblyOptions& o,
+                                 const std::vector<Footprint>& footprints) {
+  AssemblyResult res;
+  res.planes_in = static_cast<int>(input.size());
+
+  // 1. Plausible roof planes, cut at the footprints when there are any.
+  const std::vector<int> plausible = PlausiblePlanes(input, ground, o, &res.rejected);
+  std::vector<RoofPlaneHypothesis> planes;
+  std::vector<int> footprint_of, origin;  // per plane: footprint index or -1, input index
+  if (footprints.empty()) {
+    for (int i : plausible) {
+      planes.push_back(input[i]);
+      if (planes.back().id.empty()) planes.back().id = StrFormat("plane %d", i);
+      footprint_of.push_back(-1);
+      origin.push_back(i);
+    }
+  } else {
+    planes =
+        CutAtFootprints(input, plausible, footprints, o, &footprint_of, &origin, &res.rejected);
+  }
+  const int n = static_cast<int>(planes.size());
+  auto name = [&](int i) { return planes[i].id; };
+
+  // 2. Buildings: patches that touch and whose planes meet there, over
+  // the same footprint.
   UnionFind uf(n), parts(n);
   std::vector<Ring2> grown(n);
-  for (int i : keep) grown[i] = GrowConvex(planes[i].patch, o.adjacency_gap_m);
-  for (size_t a = 0; a < keep.size(); ++a)
-    for (size_t b = a + 1; b < keep.size(); ++b) {
-      const int i = keep[a], j = keep[b];
+  for (int i = 0; i < n; ++i) grown[i] = GrowConvex(planes[i].patch, o.adjacency_gap_m);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      if (footprint_of[i] != footprint_of[j]) continue;
       if (ConvexDistance(planes[i].patch, planes[j].patch) > o.adjacency_gap_m) continue;
       const Ring2 meet = IntersectConvex(grown[i], grown[j]);
       if (meet.empty()) continue;
@@ -233,165 +482,116 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
       if (convex || !o.split_at_valleys) parts.Join(i, j);
     }
   std::map<int, std::vector<int>> groups;
-  for (int i : keep) groups[parts.Find(i)].push_back(i);
+  for (int i = 0; i < n; ++i) groups[parts.Find(i)].push_back(i);
   res.hypotheses = static_cast<int>(groups.size());
+  std::vector<int> built_over(footprints.size(), 0);
+  std::vector<std::vector<int>> planes_over(footprints.size());
+  for (int i = 0; i < n; ++i)
+    if (footprint_of[i] >= 0) planes_over[footprint_of[i]].push_back(i);
+  // Per footprint: 0 not tried yet, 1 built over its whole outline, -1 not.
+  std::vector<int> whole(footprints.size(), 0);
 
   int building_no = 0;
   for (auto& [root, members] : groups) {
     ++building_no;
     const std::string bname = StrFormat("building hypothesis %d", building_no);
+    const int f = footprint_of[root];
+    const Footprint* fp = f >= 0 ? &footprints[f] : nullptr;
+    std::optional<Envelope> env;
     std::vector<int> active = members;
-    Ring2 outline;
-    std::vector<Ring2> regions;
-    double ground_z = 0;
-    // 3. Lower envelope, dropping planes that bound the roof where the
-    // images did not see them, until every face is supported.
-    for (;;) {
-      std::vector<Eigen::Vector2d> all;
-      for (int i : active) all.insert(all.end(), planes[i].patch.begin(), planes[i].patch.end());
-      outline = ConvexHull(all);
-      if (outline.size() < 3) break;
-      ground_z = std::numeric_limits<double>::infinity();
-      for (const auto& p : outline) ground_z = std::min(ground_z, ground.HeightAt(p.x(), p.y()));
-      regions.assign(active.size(), Ring2{});
-      int worst = -1;
-      double worst_value = std::numeric_limits<double>::infinity();
-      std::string worst_reason;
-      for (size_t k = 0; k < active.size(); ++k) {
-        const int i = active[k];
-        regions[k] = EnvelopeRegion(planes, active, i, outline);
-        const double area = regions[k].empty() ? 0.0 : SignedArea(regions[k]);
-        const Ring2 inside = IntersectConvex(regions[k], grown[i]);
-        const double support = area > 0 && !inside.empty() ? SignedArea(inside) / area : 0.0;
-        double low = std::numeric_limits<double>::infinity();
-        for (const auto& p : regions[k]) low = std::min(low, PlaneZ(planes[i].plane, p));
-        // Rank failures by how little evidence the face has.
-        double value = std::numeric_limits<double>::infinity();
-        std::string why;
-        if (area < o.min_face_area_m2) {
-          value = area;
-          why = StrFormat(": roof face of %.2f m2 < %.2f m2 (%s)", area, o.min_face_area_m2,
-                          area == 0 ? "above the roof everywhere" : "sliver");
-        } else if (support < o.min_support) {
-          value = support;
-          why = StrFormat(": only %.0f %% of its roof face lies where the images saw the plane",
-                          100 * support);
-        } else if (low - ground_z < 0.5 * o.min_height_m) {
-          value = -1;  // a roof below the walls' minimum height is never right
-          why = StrFormat(": its roof face comes down to %.2f m above the ground", low - ground_z);
-        }
-        if (value < worst_value ||
-            (value == worst_value && worst >= 0 && planes[i].score < planes[active[worst]].score)) {
-          worst_value = value;
-          worst = static_cast<int>(k);
-          worst_reason = why;
+    std::string outline_source = "roof planes";
+    // 3a. A footprint is the outline of one building made of all the
+    // planes over it, when their lower envelope is seen over the whole of
+    // it: the walls stand on the footprint, as in cadastre-based LoD2. The
+    // faces must be seen over more of their area than in the fallback
+    // below: a plane seen over half a footprint is more often one side of a
+    // roof whose other side was missed than a shed roof, and one wing's
+    // plane reaching over the other wing of an L (a valley) is never seen
+    // there.
+    if (fp) {
+      if (whole[f] == 1) {
+        --res.hypotheses;  // its planes are in the footprint's building
+        continue;
+      }
+      if (whole[f] == 0) {
+        whole[f] = -1;
+        Envelope e = LowerEnvelope(planes, planes_over[f], fp->outline, grown, ground, o,
+                                   o.footprint_min_support);
+        if (e.worst < 0 && std::isfinite(e.ground_z) &&
+            CheckBuildingSolid(BuildSolid(planes, planes_over[f], e, o)).Valid()) {
+          env = std::move(e);
+          active = planes_over[f];
+          outline_source = "footprint";
+          whole[f] = 1;
         }
       }
-      if (worst < 0 || worst_reason.empty()) break;
-      res.rejected.push_back(name(active[worst]) + worst_reason);
-      active.erase(active.begin() + worst);
+    }
+    // 3b. The convex hull of the patches (cut at the footprint), dropping
+    // planes that bound the roof where the images did not see them, until
+    // every face is supported.
+    while (!env) {
+      std::vector<Eigen::Vector2d> all;
+      for (int i : active) all.insert(all.end(), planes[i].patch.begin(), planes[i].patch.end());
+      Ring2 outline = ConvexHull(all);
+      if (fp && outline.size() >= 3) {
+        std::vector<Ring2> pieces = IntersectPolygons(outline, fp->outline);
+        auto largest = std::max_element(
+            pieces.begin(), pieces.end(),
+            [](const Ring2& a, const Ring2& b) { return SignedArea(a) < SignedArea(b); });
+        outline = largest == pieces.end() ? Ring2{} : *largest;
+        outline_source = "roof planes cut at the footprint";
+      }
+      if (outline.size() < 3) break;
+      Envelope e = LowerEnvelope(planes, active, outline, grown, ground, o, o.min_support);
+      if (e.worst < 0) {
+        env = std::move(e);
+        break;
+      }
+      res.rejected.push_back(name(active[e.worst]) + e.worst_reason);
+      active.erase(active.begin() + e.worst);
       if (active.empty()) break;
     }
-    if (active.empty() || outline.size() < 3) {
+    if (!env) {
       res.rejected.push_back(bname + ": no roof plane left");
       continue;
     }
-    const double footprint = SignedArea(outline);
-    if (footprint < o.min_footprint_m2) {
-      res.rejected.push_back(
-          bname + StrFormat(": footprint %.1f m2 < %.1f m2", footprint, o.min_footprint_m2));
+    const double area = SignedArea(env->outline);
+    if (area < o.min_footprint_m2) {
+      res.rejected.push_back(bname +
+                             StrFormat(": footprint %.1f m2 < %.1f m2", area, o.min_footprint_m2));
       continue;
     }
-    if (!std::isfinite(ground_z)) {
+    if (!std::isfinite(env->ground_z)) {
       res.rejected.push_back(bname + ": no ground height under the outline");
       continue;
     }
 
-    // 4. Shared vertices: weld, then build faces from welded ids so that
-    // neighbouring faces and the walls use the very same coordinates.
-    Welder welder(o.weld_m);
-    std::vector<std::vector<int>> region_ids(active.size());
-    for (size_t k = 0; k < active.size(); ++k)
-      for (const auto& p : regions[k]) region_ids[k].push_back(welder.Add(p));
-    std::vector<int> outline_ids;
-    for (const auto& p : outline) outline_ids.push_back(welder.Add(p));
-    auto roof_z = [&](int id) {
-      double z = std::numeric_limits<double>::infinity();
-      for (int i : active) z = std::min(z, PlaneZ(planes[i].plane, welder.points()[id]));
-      return z;
-    };
-    auto top = [&](int id) {
-      const Eigen::Vector2d& p = welder.points()[id];
-      return Eigen::Vector3d(p.x(), p.y(), roof_z(id));
-    };
-
-    Building b;
+    Building b = BuildSolid(planes, active, *env, o);
     b.id = StrFormat("rs_b%04d", static_cast<int>(res.model.buildings.size()) + 1);
-    Surface roof{SurfaceType::kRoof, "", {}};
-    double lines = 0, sim = 0, score = 0;
-    std::vector<Polygon3> roof_faces;
-    for (size_t k = 0; k < active.size(); ++k) {
-      const std::vector<int> ring = CloseRing(welder, region_ids[k]);
-      if (ring.size() < 3) continue;
-      Polygon3 poly;
-      for (int id : ring) poly.exterior.push_back(top(id));
-      roof.polygons.push_back(poly);
-      const RoofPlaneHypothesis& p = planes[active[k]];
-      lines += p.lines;
-      sim += p.similarity;
-      score += p.score;
-    }
-    roof_faces = roof.polygons;
-    std::vector<Surface> walls;
-    const std::vector<int> ring = CloseRing(welder, outline_ids);
-    // Outline vertices in the welded ring order, for the walls' corners.
-    std::vector<size_t> corners;
-    for (size_t k = 0; k < ring.size(); ++k)
-      if (std::find(outline_ids.begin(), outline_ids.end(), ring[k]) != outline_ids.end())
-        corners.push_back(k);
-    for (size_t c = 0; c < corners.size(); ++c) {
-      const size_t from = corners[c], to = corners[(c + 1) % corners.size()];
-      std::vector<int> chain;
-      for (size_t k = from;; k = (k + 1) % ring.size()) {
-        chain.push_back(ring[k]);
-        if (k == to) break;
-      }
-      const Eigen::Vector2d& p = welder.points()[chain.front()];
-      const Eigen::Vector2d& q = welder.points()[chain.back()];
-      Polygon3 wall;
-      wall.exterior.emplace_back(p.x(), p.y(), ground_z);
-      wall.exterior.emplace_back(q.x(), q.y(), ground_z);
-      for (auto it = chain.rbegin(); it != chain.rend(); ++it) wall.exterior.push_back(top(*it));
-      walls.push_back({SurfaceType::kWall, "", {wall}});
-    }
-    Polygon3 floor;
-    for (auto it = corners.rbegin(); it != corners.rend(); ++it) {
-      const Eigen::Vector2d& p = welder.points()[ring[*it]];
-      floor.exterior.emplace_back(p.x(), p.y(), ground_z);
-    }
-    b.surfaces.push_back({SurfaceType::kGround, "", {floor}});
-    for (Polygon3& r : roof.polygons) b.surfaces.push_back({SurfaceType::kRoof, "", {r}});
-    for (Surface& w : walls) b.surfaces.push_back(std::move(w));
-    b.roof_type = ClassifyRoofType(roof_faces);
-    double top_z = -std::numeric_limits<double>::infinity();
-    for (const Polygon3& r : roof_faces)
-      for (const auto& v : r.exterior) top_z = std::max(top_z, v.z());
-    b.measured_height = top_z - ground_z;
-    b.double_attributes["roof_planes"] = static_cast<double>(roof_faces.size());
-    b.double_attributes["supporting_lines"] = lines;
-    b.double_attributes["photometric_score"] = roof_faces.empty() ? 0.0 : sim / roof_faces.size();
-    b.double_attributes["reliability"] = score;
-    b.double_attributes["footprint_m2"] = footprint;
     // Convex parts of one building (split at valleys) share this number.
-    b.double_attributes["building_group"] = static_cast<double>(uf.Find(root));
-
+    b.double_attributes["building_group"] = static_cast<double>(origin[uf.Find(root)]);
+    if (fp) {
+      b.string_attributes["footprint_id"] = fp->id;
+      b.string_attributes["outline"] =
+          fp->holes > 0 ? outline_source + StrFormat(" (%d courtyards not modelled)", fp->holes)
+                        : outline_source;
+    }
     const SolidCheckResult check = CheckBuildingSolid(b);
     if (!check.Valid()) {
       res.rejected.push_back(bname + ": solid not valid (" + check.Summary() + ")");
       continue;
     }
     res.planes_used += static_cast<int>(active.size());
+    if (f >= 0) ++built_over[f];
     res.model.buildings.push_back(std::move(b));
+  }
+  // Every footprint ends as a building or a reason.
+  for (size_t f = 0; f < footprints.size(); ++f) {
+    if (built_over[f] > 0) continue;
+    res.rejected.push_back("footprint " + footprints[f].id +
+                           (!planes_over[f].empty()
+                                ? ": its roof planes did not make a valid building"
+                                : ": no roof plane found over it"));
   }
   return res;
 }

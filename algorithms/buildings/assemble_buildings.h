@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
+#include "algorithms/buildings/footprint.h"
 #include "algorithms/geometry/block.h"
 
 namespace roofsweep {
@@ -54,6 +55,21 @@ struct AssemblyOptions {
   double min_support = 0.3;
   // Buildings whose outline is smaller than this are logged and dropped.
   double min_footprint_m2 = 5.0;
+  // With footprints: a plane is kept when at least footprint_min_inside of
+  // its patch lies over footprints, and cut into one plane per footprint
+  // it covers by at least footprint_min_piece_m2 (smaller overlaps are
+  // eaves and registration error, not roof).
+  double footprint_min_inside = 0.5;
+  double footprint_min_piece_m2 = 2.0;
+  // A footprint holding one convex roof part becomes the building's
+  // outline when every roof face over it is seen (inside its grown patch)
+  // over at least this fraction of its area; else the outline is the hull
+  // of the patches cut at the footprint, with min_support. Higher than
+  // min_support: one side of a gable seen alone, its patch grown by
+  // adjacency_gap_m, covers 0.55-0.7 of a 6-20 m wide footprint and must
+  // not become a shed roof over all of it; faces seen on both sides are
+  // covered 0.9-1.
+  double footprint_min_support = 0.75;
   // Vertices closer than this are welded so that neighbouring faces share
   // them exactly.
   double weld_m = 1e-3;
@@ -78,8 +94,16 @@ struct AssemblyResult {
 // the ground surface is planar); the solid is closed and outward oriented
 // by construction and checked with CheckBuildingSolid. Roof type from the
 // face count and orientations. Deterministic.
+//
+// With footprints (local frame) planes are cut at them and only planes over
+// the same footprint form a building, which carries the footprint's id
+// (string attribute footprint_id) and says what its walls stand on
+// (attribute outline: "footprint", "roof planes cut at the footprint");
+// every footprint ends as a building or a reason in
+// `rejected`.
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
-                                 const GroundModel& ground, const AssemblyOptions& options = {});
+                                 const GroundModel& ground, const AssemblyOptions& options = {},
+                                 const std::vector<Footprint>& footprints = {});
 
 // Roof type (roof_type:: code) from the roof faces: flat, monopitch,
 // gabled, hipped, pavilion (pyramid) or combination. Faces under 5 % of

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/solid_check.h"
 
 namespace roofsweep {
@@ -184,6 +185,146 @@ TEST(ConvexPolygon2, ClipIntersectDistance) {
   const Ring2 far = ConvexHull({{5, 0}, {6, 0}, {6, 1}});
   EXPECT_NEAR(ConvexDistance(sq, far), 3, 1e-12);
   EXPECT_EQ(ConvexDistance(sq, other), 0);
+}
+
+Footprint Fp(const std::string& id, Ring2 outline) {
+  Footprint f;
+  f.id = id;
+  f.outline = std::move(outline);
+  return f;
+}
+
+int Count(const Building& b, SurfaceType t) {
+  int n = 0;
+  for (const Surface& s : b.surfaces) n += s.type == t;
+  return n;
+}
+
+bool Mentions(const std::vector<std::string>& lines, const std::string& a, const std::string& b) {
+  for (const std::string& l : lines)
+    if (l.find(a) != std::string::npos && l.find(b) != std::string::npos) return true;
+  return false;
+}
+
+TEST(AssembleBuildingsFootprints, WallsStandOnTheFootprint) {
+  // Patches seen over the middle of each face only; the footprint is the
+  // true 10 x 8 m outline.
+  const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, -90), {{1, 0.5}, {9, 0.5}, {9, 3.8}, {1, 3.8}}),
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, 90), {{1.5, 4.2}, {8.5, 4.2}, {8.5, 7}, {1.5, 7}})};
+  const AssemblyResult without = AssembleBuildings(planes, Flat(0));
+  ASSERT_EQ(without.model.buildings.size(), 1u);
+  EXPECT_LT(without.model.buildings[0].double_attributes.at("footprint_m2"), 60);
+
+  const AssemblyResult r =
+      AssembleBuildings(planes, Flat(0), {}, {Fp("DEBE123", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})});
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  const Building& b = r.model.buildings[0];
+  EXPECT_NEAR(b.double_attributes.at("footprint_m2"), 80, 1e-9);
+  EXPECT_EQ(b.string_attributes.at("footprint_id"), "DEBE123");
+  EXPECT_EQ(b.string_attributes.at("outline"), "footprint");
+  EXPECT_EQ(b.roof_type, roof_type::kGabled);
+  EXPECT_EQ(Count(b, SurfaceType::kRoof), 2);
+  EXPECT_NEAR(b.measured_height, ridge_z, 1e-9);
+  ExpectAllValid(r);
+}
+
+TEST(AssembleBuildingsFootprints, OnePlaneOverATerraceBecomesOneBuildingPerHouse) {
+  // A flat roof plane found across three terraced houses of equal height.
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp({0, 0, 1, -7}, {{0.5, 0.5}, {29.5, 0.5}, {29.5, 7.5}, {0.5, 7.5}})};
+  EXPECT_EQ(AssembleBuildings(planes, Flat(0)).model.buildings.size(), 1u);
+  const std::vector<Footprint> houses = {Fp("a", {{0, 0}, {10, 0}, {10, 8}, {0, 8}}),
+                                         Fp("b", {{10, 0}, {20, 0}, {20, 8}, {10, 8}}),
+                                         Fp("c", {{20, 0}, {30, 0}, {30, 8}, {20, 8}})};
+  const AssemblyResult r = AssembleBuildings(planes, Flat(0), {}, houses);
+  ASSERT_EQ(r.model.buildings.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    const Building& b = r.model.buildings[k];
+    EXPECT_EQ(b.string_attributes.at("footprint_id"), houses[k].id);
+    EXPECT_NEAR(b.double_attributes.at("footprint_m2"), 80, 1e-9) << b.id;
+    EXPECT_EQ(b.roof_type, roof_type::kFlat);
+  }
+  ExpectAllValid(r);
+}
+
+TEST(AssembleBuildingsFootprints, NonConvexFootprint) {
+  // An L-shaped footprint under one flat roof: the solid follows the L.
+  const Ring2 l = {{0, 0}, {12, 0}, {12, 5}, {5, 5}, {5, 12}, {0, 12}};
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp({0, 0, 1, -6}, {{0.5, 0.5}, {11, 0.5}, {11, 4.5}, {4.5, 11}, {0.5, 11}})};
+  const AssemblyResult r = AssembleBuildings(planes, Flat(0), {}, {Fp("L", l)});
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  const Building& b = r.model.buildings[0];
+  EXPECT_NEAR(b.double_attributes.at("footprint_m2"), 12 * 5 + 5 * 7, 1e-9);
+  EXPECT_EQ(b.string_attributes.at("outline"), "footprint");
+  EXPECT_EQ(Count(b, SurfaceType::kWall), 6);
+  ExpectAllValid(r);
+  EXPECT_NEAR(CheckBuildingSolid(b).signed_volume, 95 * 6, 1e-6);
+}
+
+TEST(AssembleBuildingsFootprints, NonConvexFootprintUnderAGable) {
+  // The gable's two faces each cut at the reflex corner of an L-shaped
+  // footprint (a notch in one corner): roof faces may be non-convex.
+  const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, -90), {{1, 0.5}, {9, 0.5}, {9, 3.8}, {1, 3.8}}),
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, 90), {{1, 4.2}, {7, 4.2}, {7, 7.5}, {1, 7.5}})};
+  const Ring2 notched = {{0, 0}, {10, 0}, {10, 6}, {8, 6}, {8, 8}, {0, 8}};
+  const AssemblyResult r = AssembleBuildings(planes, Flat(0), {}, {Fp("n", notched)});
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  const Building& b = r.model.buildings[0];
+  EXPECT_EQ(b.string_attributes.at("outline"), "footprint");
+  EXPECT_NEAR(b.double_attributes.at("footprint_m2"), 76, 1e-9);
+  ExpectAllValid(r);
+}
+
+TEST(AssembleBuildingsFootprints, OneSideOfAGableIsNotAShedOverTheWholeFootprint) {
+  const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, -90), {{1, 0.5}, {9, 0.5}, {9, 3.8}, {1, 3.8}})};
+  const AssemblyResult r =
+      AssembleBuildings(planes, Flat(0), {}, {Fp("g", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})});
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  const Building& b = r.model.buildings[0];
+  EXPECT_EQ(b.string_attributes.at("outline"), "roof planes cut at the footprint");
+  EXPECT_LT(b.double_attributes.at("footprint_m2"), 40);
+  ExpectAllValid(r);
+}
+
+TEST(AssembleBuildingsFootprints, EveryPlaneAndFootprintEndsSomewhere) {
+  std::vector<RoofPlaneHypothesis> planes = Gable();
+  planes.push_back(Hyp({0, 0, 1, -6}, {{50, 50}, {60, 50}, {60, 60}, {50, 60}}));
+  planes.back().id = "plane in the park";
+  const std::vector<Footprint> fps = {Fp("house", {{0, 0}, {10, 0}, {10, 8}, {0, 8}}),
+                                      Fp("shed", {{30, 0}, {34, 0}, {34, 3}, {30, 3}})};
+  const AssemblyResult r = AssembleBuildings(planes, Flat(0), {}, fps);
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.model.buildings[0].string_attributes.at("footprint_id"), "house");
+  EXPECT_TRUE(Mentions(r.rejected, "plane in the park", "over a footprint")) << r.rejected.size();
+  EXPECT_TRUE(Mentions(r.rejected, "footprint shed", "no roof plane"));
+  ExpectAllValid(r);
+}
+
+TEST(Polygon2, IntersectNonConvex) {
+  const Ring2 l = {{0, 0}, {12, 0}, {12, 5}, {5, 5}, {5, 12}, {0, 12}};
+  EXPECT_FALSE(IsConvexRing(l));
+  EXPECT_TRUE(IsConvexRing({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}));
+  const Ring2 sq = {{4, 4}, {13, 4}, {13, 13}, {4, 13}};
+  EXPECT_EQ(IntersectPolygons(sq, l).size(), 1u);
+  EXPECT_NEAR(IntersectionArea(sq, l), 8 * 1 + 1 * 7, 1e-9);
+  // A triangle across the two arms, clear of the corner: two pieces.
+  const Ring2 tri = {{11, 4}, {13, 13}, {4, 11}};
+  const std::vector<Ring2> pieces = IntersectPolygons(tri, l);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_GT(SignedArea(pieces[0]), 0);
+  EXPECT_NEAR(SignedArea(pieces[0]) + SignedArea(pieces[1]), IntersectionArea(tri, l), 1e-12);
+  // Clockwise input is accepted.
+  Ring2 cw(l.rbegin(), l.rend());
+  EXPECT_NEAR(IntersectionArea(sq, cw), 15, 1e-9);
+  EXPECT_FALSE(RingSelfIntersects(l));
+  EXPECT_TRUE(RingSelfIntersects({{0, 0}, {2, 2}, {2, 0}, {0, 2}}));
 }
 
 }  // namespace

@@ -1,0 +1,109 @@
+#include "algorithms/buildings/polygon2.h"
+
+// Boost.Geometry's rescale policy trips GCC's -Wmaybe-uninitialized in
+// release builds (a false positive inside Boost, reported at the
+// instantiation in this file).
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#include <cmath>
+
+namespace roofsweep {
+namespace {
+
+namespace bg = boost::geometry;
+using Point = bg::model::d2::point_xy<double>;
+// Counter-clockwise, open rings: the convention of Ring2.
+using Polygon = bg::model::polygon<Point, /*ClockWise=*/false, /*Closed=*/false>;
+
+Polygon ToBoost(const Ring2& r) {
+  Polygon p;
+  for (const auto& v : r) p.outer().emplace_back(v.x(), v.y());
+  bg::correct(p);
+  return p;
+}
+
+double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, v = c - a;
+  return u.x() * v.y() - u.y() * v.x();
+}
+
+// True when the closed segments p1-p2 and q1-q2 have a point in common
+// (crossing, touching, or overlapping when collinear).
+bool SegmentsMeet(const Eigen::Vector2d& p1, const Eigen::Vector2d& p2, const Eigen::Vector2d& q1,
+                  const Eigen::Vector2d& q2) {
+  if (std::max(p1.x(), p2.x()) < std::min(q1.x(), q2.x()) ||
+      std::max(q1.x(), q2.x()) < std::min(p1.x(), p2.x()) ||
+      std::max(p1.y(), p2.y()) < std::min(q1.y(), q2.y()) ||
+      std::max(q1.y(), q2.y()) < std::min(p1.y(), p2.y()))
+    return false;
+  const double d1 = Cross(q1, q2, p1), d2 = Cross(q1, q2, p2);
+  const double d3 = Cross(p1, p2, q1), d4 = Cross(p1, p2, q2);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+    return true;
+  // Collinear end points: on the other segment when inside its box.
+  auto on = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+               double d) {
+    return d == 0 && std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) &&
+           std::min(a.y(), b.y()) <= c.y() && c.y() <= std::max(a.y(), b.y());
+  };
+  return on(q1, q2, p1, d1) || on(q1, q2, p2, d2) || on(p1, p2, q1, d3) || on(p1, p2, q2, d4);
+}
+
+}  // namespace
+
+std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b) {
+  std::vector<Ring2> out;
+  if (a.size() < 3 || b.size() < 3) return out;
+  std::vector<Polygon> pieces;
+  bg::intersection(ToBoost(a), ToBoost(b), pieces);
+  for (const Polygon& p : pieces) {
+    Ring2 r;
+    for (const Point& v : p.outer()) {
+      const Eigen::Vector2d q(v.x(), v.y());
+      if (r.empty() || (q - r.back()).norm() > 1e-9) r.push_back(q);
+    }
+    while (r.size() > 1 && (r.front() - r.back()).norm() <= 1e-9) r.pop_back();
+    if (r.size() >= 3 && SignedArea(r) > 1e-9) out.push_back(std::move(r));
+  }
+  return out;
+}
+
+double IntersectionArea(const Ring2& a, const Ring2& b) {
+  double area = 0;
+  for (const Ring2& r : IntersectPolygons(a, b)) area += SignedArea(r);
+  return area;
+}
+
+bool IsConvexRing(const Ring2& r) {
+  const size_t n = r.size();
+  if (n < 3) return false;
+  int sign = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double c = Cross(r[i], r[(i + 1) % n], r[(i + 2) % n]);
+    // Relative tolerance: collinear vertices of long edges are not turns.
+    const double scale = (r[(i + 1) % n] - r[i]).norm() * (r[(i + 2) % n] - r[(i + 1) % n]).norm();
+    if (std::abs(c) <= 1e-9 * scale) continue;
+    const int s = c > 0 ? 1 : -1;
+    if (sign != 0 && s != sign) return false;
+    sign = s;
+  }
+  return sign != 0;
+}
+
+bool RingSelfIntersects(const Ring2& r, std::pair<size_t, size_t>* edges) {
+  const size_t n = r.size();
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing vertex
+      if (SegmentsMeet(r[i], r[i + 1], r[j], r[(j + 1) % n])) {
+        if (edges) *edges = {i, j};
+        return true;
+      }
+    }
+  return false;
+}
+
+}  // namespace roofsweep

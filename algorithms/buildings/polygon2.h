@@ -1,0 +1,32 @@
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "algorithms/buildings/convex_polygon2.h"
+
+namespace roofsweep {
+
+// Plan-view operations on simple polygons that may be non-convex (building
+// footprints). Boost.Geometry does the clipping: footprints are arbitrary
+// simple polygons, and the convex routines of convex_polygon2.h are exact
+// only for convex ones. Kept in this one translation unit because the
+// Boost.Geometry set operations are heavy to compile.
+
+// The pieces of a ∩ b, each counter-clockwise, first vertex not repeated;
+// empty when they do not overlap. Either ring may have either orientation.
+std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b);
+
+// Area of a ∩ b (m²).
+double IntersectionArea(const Ring2& a, const Ring2& b);
+
+// True when the ring (either orientation) turns one way only (collinear
+// vertices allowed).
+bool IsConvexRing(const Ring2& ring);
+
+// True when two non-adjacent edges of the ring cross, touch or overlap
+// (also spikes: an edge folding back over its predecessor); `edges`
+// receives the first such pair of edge indices. O(n²), fine for footprints.
+bool RingSelfIntersects(const Ring2& ring, std::pair<size_t, size_t>* edges = nullptr);
+
+}  // namespace roofsweep
