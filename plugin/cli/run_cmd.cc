@@ -53,6 +53,14 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "also write the half-planes (layer half_planes)")
       .Option("-report", &r.report, "FILE",
               "JSON report: the stage table and why each rejected plane or building was not built")
+      .Option("-footprints", &r.footprints, "FILE",
+              "building footprints (any OGR polygon layer) that restrict and label the buildings; "
+              "default: the block's")
+      .Option("-footprints_layer", &r.footprints_layer, "NAME",
+              "layer of -footprints (default: the first polygon layer)")
+      .Option("-footprints_id", &r.footprints_id_field, "FIELD",
+              "field giving each footprint's id (default: id, identificatie, gml_id or fid, else "
+              "the FID)")
       .Option("-min_height", &r.assembly.min_height_m, "M",
               "lowest roof plane above the ground (default 2.5)")
       .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",
@@ -64,7 +72,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   bool init_best = false;
   AddProcessingOptions(p, r, &init_best);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
-      .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite");
+      .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite")
+      .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg");
   if (!p.Parse(args)) return 0;
   r.line_planes = !sweep_only;
   r.match.init_from_best_correlation = init_best;

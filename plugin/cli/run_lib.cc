@@ -12,9 +12,11 @@
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/format.h"
+#include "algorithms/geometry/block_overview.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/sweep/sweep_half_planes.h"
 #include "io/citymodel/citymodel_io.h"
+#include "io/citymodel/footprint_reader.h"
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/output_file.h"
 #include "io/citymodel/reproject.h"
@@ -49,6 +51,25 @@ std::string ReasonKind(const std::string& r) {
   return paren == std::string::npos ? out : out.substr(0, paren);
 }
 
+// The block's area of interest, else the bounding box of what the images
+// see on the ground: footprints beyond it cannot be reconstructed and are
+// not reported one by one.
+std::optional<Eigen::Vector4d> BlockExtent(const Block& block) {
+  if (block.aoi) return block.aoi;
+  const BlockOverview overview = AnalyzeBlock(block);
+  Eigen::Vector4d e(1e300, 1e300, -1e300, -1e300);
+  bool any = false;
+  for (const ViewFootprint& f : overview.footprints) {
+    if (!f.valid) continue;
+    for (const Eigen::Vector3d& p : f.outline) {
+      e[0] = std::min(e[0], p.x()), e[1] = std::min(e[1], p.y());
+      e[2] = std::max(e[2], p.x()), e[3] = std::max(e[3], p.y());
+      any = true;
+    }
+  }
+  return any ? std::optional<Eigen::Vector4d>(e) : std::nullopt;
+}
+
 void WriteReport(const std::string& path, const RunSummary& s) {
   nlohmann::json j;
   for (const RunStage& st : s.stages)
@@ -80,10 +101,30 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   const LocalFrame frame = ManifestLocalFrame(manifest);
   if (!block.ground.Known() && !r.stop_after_sweep)
     throw Error(r.block + ": the block has no ground height or DTM; walls need one");
+  // Footprints are read first: a wrong file or CRS should fail in seconds,
+  // not after the matching.
+  std::vector<Footprint> footprints;
+  const std::string footprint_path = r.footprints.empty() ? block.footprints_path : r.footprints;
+  if (!footprint_path.empty() && !r.stop_after_sweep) {
+    FootprintReadOptions fo;
+    fo.layer = r.footprints.empty() ? block.footprints_layer : r.footprints_layer;
+    fo.id_field = r.footprints_id_field;
+    fo.block_crs = manifest.crs;
+    fo.extent = BlockExtent(block);
+    footprints = ReadFootprints(footprint_path, frame, fo, &out.messages);
+    if (footprints.empty())
+      throw Error(footprint_path +
+                  ": no footprint lies where the block's images see the ground "
+                  "(a different CRS or area?)");
+  }
   std::vector<cv::Mat> images(block.views.size());
   tbb::parallel_for(size_t{0}, images.size(),
                     [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
-  out.stages.push_back({"read", StrFormat("%zu images", images.size()), Since(t0)});
+  out.stages.push_back({"read",
+                        footprints.empty() ? StrFormat("%zu images", images.size())
+                                           : StrFormat("%zu images, %zu footprints", images.size(),
+                                                       footprints.size()),
+                        Since(t0)});
 
   // Lines and matching: 0 .. 35 %; sweep: 35 .. 95 %.
   t0 = Clock::now();
@@ -91,7 +132,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   if (r.lines_in.empty()) {
     SubProgress match_progress(progress, 0.0, 0.35);
     matched = MatchLines(block, images, r.match, r.edges, match_progress, nullptr);
-    out.messages = matched.messages;
+    out.messages.insert(out.messages.end(), matched.messages.begin(), matched.messages.end());
     out.stages.push_back(
         {"segments + 3D lines",
          StrFormat("%lld segments, %zu 3D lines", matched.funnel.segments, matched.lines.size()),
@@ -255,7 +296,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   }
 
   t0 = Clock::now();
-  AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly);
+  AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   out.buildings = static_cast<int>(assembled.model.buildings.size());
   out.stages.push_back({"LoD2 buildings",

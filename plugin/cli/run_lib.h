@@ -28,6 +28,11 @@ struct RunRequest {
   std::string half_planes;  // optional: also write the half-planes (OGR layer half_planes)
   std::string report;       // optional: JSON with the stage table and every rejection
   std::string target_crs;   // optional: reproject the LoD2 output (PROJ), -t_srs
+  // Optional building footprints (any OGR polygon layer); empty: the
+  // block's, if it names any. They restrict and label the buildings.
+  std::string footprints;
+  std::string footprints_layer;
+  std::string footprints_id_field;
   EdgeOptions edges;
   MatchOptions match;
   SweepOptions sweep;

@@ -11,6 +11,7 @@
 #include "algorithms/core/error.h"
 #include "algorithms/geometry/rotation.h"
 #include "io/citymodel/citymodel_io.h"
+#include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/image_io.h"
@@ -193,6 +194,25 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   truth.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
   truth.crs = crs;
   WriteCityModel(truth, dir + "/groundtruth.gml");
+
+  // The true footprints (each building's ground surfaces), the input `run`
+  // takes as building footprints; not referenced from block.json, so the
+  // default evaluation stays without them.
+  std::vector<LayerFeature> footprints;
+  for (const Building& b : truth.buildings) {
+    LayerFeature f;
+    for (const Surface& sf : b.surfaces)
+      if (sf.type == SurfaceType::kGround)
+        f.polygons.insert(f.polygons.end(), sf.polygons.begin(), sf.polygons.end());
+    if (f.polygons.empty()) continue;
+    f.strings["id"] = b.id;
+    footprints.push_back(std::move(f));
+  }
+  FeatureLayerOptions fo;
+  fo.crs = crs;
+  fo.description = "simulated building footprints (the true ground surfaces)";
+  WriteFeatureLayer(dir + "/footprints.gpkg", "footprints", LayerGeometry::kMultiPolygonZ,
+                    footprints, fo);
 
   SegmentSet edges;
   edges.crs = crs;

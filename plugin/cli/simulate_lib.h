@@ -52,6 +52,9 @@ struct SimulateSummary {
 //                                  files above (so the readers are exercised)
 //   groundtruth.gml                LoD2 ground truth, CityGML 2.0, block CRS
 //   groundtruth_edges.json         3D roof edges and ground markings with kinds
+//   footprints.gpkg                the true building footprints (ground
+//                                  surfaces, layer `footprints`, field id) for
+//                                  `run`'s footprint input; not in block.json
 //   simulation.json                what was simulated (preset, seed, options)
 // The folder is written under a temporary name and renamed when complete.
 SimulateSummary RunSimulate(const SimulateRequest& request, Progress& progress);

@@ -74,6 +74,44 @@ assert n > 0 and acc is not None, (n, acc)
 PY
 }
 
+test_run_with_footprints() {
+  small_block || return
+  # The simulator's footprints, in another CRS than the block: read through
+  # OGR, reprojected, and every footprint ends as a building or a reason.
+  ogr2ogr -t_srs EPSG:3857 "$WORK/fp3857.gpkg" "$SIM/footprints.gpkg" 2>"$WORK/ogr.txt" \
+    || { fail run_fp_input "ogr2ogr: $(head -c 300 "$WORK/ogr.txt")"; return; }
+  expect_ok run_fp run "$SIM" -o "$WORK/fp.gpkg" -footprints "$WORK/fp3857.gpkg" \
+    -report "$WORK/fp.json"
+  grep -q "3 footprints" "$WORK/stdout.txt" && pass run_fp_read || fail run_fp_read "$(head -c 400 "$WORK/stdout.txt")"
+  python3 - "$WORK/fp.gpkg" "$SIM/footprints.gpkg" "$WORK/fp.json" <<'PY' && pass run_fp_labels \
+    || fail run_fp_labels "buildings not labelled by footprint, or a footprint unaccounted for"
+import json, sqlite3, sys
+out, fps, report = sys.argv[1:]
+ids = {r[0] for r in sqlite3.connect(fps).execute("select id from footprints")}
+rows = sqlite3.connect(out).execute("select footprint_id, outline from buildings").fetchall()
+assert rows, "no building"
+assert all(r[0] in ids for r in rows), rows
+assert all(r[1].startswith("footprint") or r[1].startswith("roof planes cut") for r in rows), rows
+built = {r[0] for r in rows}
+rejected = json.load(open(report))["rejected"]
+for i in ids - built:
+    assert any(x.startswith("footprint " + i + ":") for x in rejected), (i, rejected)
+PY
+  expect_ok run_fp_convert convert "$WORK/fp.gpkg" "$WORK/fp.gml"
+  grep -q "failing the solid checks" "$WORK/stdout.txt" && fail run_fp_solids "$(cat "$WORK/stdout.txt")" \
+    || pass run_fp_solids
+  expect_fail run_fp_missing "$WORK/y.gml" "nofile.gpkg" -- run "$SIM" -o "$WORK/y.gml" \
+    -footprints "$WORK/nofile.gpkg"
+  # Footprints labelled with the wrong CRS: the neighbouring UTM zone lies
+  # far away, degrees cannot hold metres.
+  ogr2ogr -a_srs EPSG:25833 "$WORK/far.gpkg" "$SIM/footprints.gpkg" 2>/dev/null
+  expect_fail run_fp_elsewhere "$WORK/y.gml" "far.gpkg: no footprint" -- run "$SIM" -o "$WORK/y.gml" \
+    -footprints "$WORK/far.gpkg"
+  ogr2ogr -a_srs EPSG:4326 "$WORK/deg.gpkg" "$SIM/footprints.gpkg" 2>/dev/null
+  expect_fail run_fp_bad_crs "$WORK/y.gml" "deg.gpkg: feature 1: .*cannot transform" -- run "$SIM" \
+    -o "$WORK/y.gml" -footprints "$WORK/deg.gpkg"
+}
+
 test_run_refuses_bad_input() {
   small_block || return
   touch "$WORK/exists.gml"

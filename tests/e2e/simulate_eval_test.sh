@@ -11,7 +11,7 @@ small_block() {
 
 test_simulate_writes_a_readable_block() {
   small_block || { fail simulate "exit $?"; return; }
-  for f in block.json groundtruth.gml groundtruth_edges.json simulation.json orientation/opk.txt orientation/camera.yaml; do
+  for f in block.json groundtruth.gml groundtruth_edges.json footprints.gpkg simulation.json orientation/opk.txt orientation/camera.yaml; do
     [[ -s "$SIM/$f" ]] || { fail "simulate_writes_$f" "missing"; return; }
   done
   pass simulate_writes_all_files
@@ -24,6 +24,24 @@ g=sim['gsd_m']  # nominal; attitude noise changes it slightly
 assert all(abs(i['gsd_m']-g)/g < 0.02 for i in j['images']), (g, [i['gsd_m'] for i in j['images']])
 assert j['overlaps'] and j['overlaps'][0]['fraction'] > 0.5" "$WORK/stdout.txt" "$SIM/simulation.json" \
     && pass simulated_block_geometry || fail simulated_block_geometry "$(head -c 400 "$WORK/stdout.txt")"
+}
+
+# footprints.gpkg: one feature per true building, id = the building's id,
+# a polygon layer in the block CRS (read here as plain SQLite).
+test_simulate_writes_true_footprints() {
+  small_block || return
+  python3 -c "
+import json,re,sqlite3,sys
+sim=json.load(open(sys.argv[2]))
+ids=sorted(set(re.findall(r'<bldg:Building gml:id=\"([^\"]+)\"', open(sys.argv[3]).read())))
+db=sqlite3.connect(sys.argv[1])
+rows=db.execute('SELECT id FROM footprints ORDER BY id').fetchall()
+assert [r[0] for r in rows]==ids and len(ids)==sim['buildings'], (rows, ids, sim['buildings'])
+gt,srs=db.execute(\"SELECT geometry_type_name, srs_id FROM gpkg_geometry_columns WHERE table_name='footprints'\").fetchone()
+assert gt=='MULTIPOLYGON' and srs>0, (gt, srs)
+assert db.execute('SELECT description FROM gpkg_contents WHERE table_name=?', ('footprints',)).fetchone()[0].startswith('simulated building footprints')
+assert 'footprints' not in open(sys.argv[4]).read()" "$SIM/footprints.gpkg" "$SIM/simulation.json" "$SIM/groundtruth.gml" "$SIM/block.json" 2>"$WORK/py.txt" \
+    && pass simulate_footprints_one_per_building || fail simulate_footprints_one_per_building "$(tail -3 "$WORK/py.txt")"
 }
 
 test_simulate_is_deterministic() {

@@ -340,3 +340,12 @@ def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path
     assert _horizontal_epsg(lyr.crs()) == ("EPSG", "25832"), lyr.crs().toWkt()
     roofs = QgsVectorLayer(out + "|layername=roof_surfaces", "r", "ogr")
     assert roofs.isValid() and QgsWkbTypes.hasZ(roofs.wkbType()) and roofs.featureCount() > 0
+    # With the simulator's footprints every building is labelled by one.
+    fps = os.path.join(os.path.dirname(sim["BLOCK"]), "footprints.gpkg")
+    out_fp = str(tmp_path / "buildings_fp.gpkg")
+    processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out_fp, "FOOTPRINTS": fps,
+                                     "FOOTPRINT_ID": "id"}, feedback=RecordingFeedback())
+    ids = {f["id"] for f in QgsVectorLayer(fps + "|layername=footprints", "f", "ogr").getFeatures()}
+    built = QgsVectorLayer(out_fp + "|layername=buildings", "b", "ogr")
+    assert built.isValid() and built.featureCount() > 0
+    assert {f["footprint_id"] for f in built.getFeatures()} <= ids

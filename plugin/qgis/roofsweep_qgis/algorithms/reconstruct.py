@@ -1,6 +1,7 @@
 """Reconstruct LoD2 buildings: roofsweep run (the whole pipeline)."""
 
-from qgis.core import (QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
+from qgis.core import (QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
+                       QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
                        QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
                        QgsProcessingParameterNumber)
 
@@ -14,13 +15,18 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
     DISPLAY = "Reconstruct LoD2 buildings"
     HELP = ("Runs the whole pipeline on an oriented block: line segments, 3D lines, plane sweep, LoD2 "
             "buildings. The output format follows the extension (GeoPackage, CityGML, CityJSON); GeoPackage "
-            "layers are added to the project.")
-    USES_OPTIONS = ("-o", "-overwrite", "-report", "-min_height")
+            "layers are added to the project. Optional building footprints (any polygon layer) restrict "
+            "the reconstruction: walls stand on the footprint where the roof planes cover it, and each "
+            "building carries its footprint's id.")
+    USES_OPTIONS = ("-o", "-overwrite", "-report", "-min_height", "-footprints", "-footprints_layer",
+                    "-footprints_id")
 
     BLOCK = "BLOCK"
     OUTPUT = "OUTPUT"
     REPORT = "REPORT"
     MIN_HEIGHT = "MIN_HEIGHT"
+    FOOTPRINTS = "FOOTPRINTS"
+    FOOTPRINT_ID = "FOOTPRINT_ID"
     LAYERS = "LAYERS"
 
     def initAlgorithm(self, config=None):
@@ -31,6 +37,11 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterFileDestination(
             self.REPORT, self.tr("Report: stage table and why each rejected plane or building was not built"),
             fileFilter="JSON (*.json)", optional=True, createByDefault=False))
+        self.addParameter(QgsProcessingParameterFeatureSource(
+            self.FOOTPRINTS, self.tr("Building footprints"), [QgsProcessing.TypeVectorPolygon], optional=True))
+        self.addParameter(QgsProcessingParameterField(
+            self.FOOTPRINT_ID, self.tr("Footprint id field (default: id, identificatie, gml_id or fid)"),
+            parentLayerParameterName=self.FOOTPRINTS, optional=True))
         min_height = QgsProcessingParameterNumber(self.MIN_HEIGHT, self.tr("Lowest roof above the ground (m)"),
                                                   QgsProcessingParameterNumber.Double, 2.5, minValue=0.0)
         min_height.setFlags(min_height.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
@@ -46,6 +57,17 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             if self.given(parameters, self.REPORT) else ""
         if report:
             args += ["-report", report]
+        if self.given(parameters, self.FOOTPRINTS):
+            # A layer roofsweep's OGR can open as it is, else a GeoPackage copy
+            # (memory layers, selections, virtual layers).
+            path, layer = self.parameterAsCompatibleSourceLayerPathAndLayerName(
+                parameters, self.FOOTPRINTS, context, ["gpkg", "shp", "geojson", "fgb"], "gpkg", feedback)
+            args += ["-footprints", path]
+            if layer:
+                args += ["-footprints_layer", layer]
+            fields = self.parameterAsFields(parameters, self.FOOTPRINT_ID, context)
+            if fields:
+                args += ["-footprints_id", fields[0]]
         self.run_program(args, feedback)
         layers = []
         if out.lower().endswith(".gpkg"):

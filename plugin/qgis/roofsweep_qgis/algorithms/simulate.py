@@ -18,7 +18,8 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
     NAME = "simulate"
     DISPLAY = "Simulate aerial block"
     HELP = ("Renders an oriented aerial block of LoD2 buildings with exactly known cameras and writes images, "
-            "orientation, a block manifest (block.json) and the ground truth (groundtruth.gml) into the output "
+            "orientation, a block manifest (block.json), the ground truth (groundtruth.gml, groundtruth_edges.json) "
+            "and the buildings' footprints (footprints.gpkg) into the output "
             "folder. Unset numbers take the preset's value. An existing output folder is replaced only if it "
             "is empty or an earlier simulation.")
     USES_OPTIONS = ("-preset", "-seed", "-o", "-overwrite")
