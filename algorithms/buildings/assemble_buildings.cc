@@ -433,8 +433,13 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
 }  // namespace
 
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
-                                 const GroundModel& ground, const AssemblyOptions& o,
+                                 const GroundModel& ground, const AssemblyOptions& options,
                                  const std::vector<Footprint>& footprints) {
+  AssemblyOptions o = options;
+  if (!footprints.empty()) {
+    o.min_height_m = options.footprint_min_height_m;
+    o.min_line_length_m = options.footprint_min_line_length_m;
+  }
   AssemblyResult res;
   res.planes_in = static_cast<int>(input.size());
 

@@ -55,6 +55,14 @@ struct AssemblyOptions {
   double min_support = 0.3;
   // Buildings whose outline is smaller than this are logged and dropped.
   double min_footprint_m2 = 5.0;
+  // With footprints, a plane over one needs only these height and line
+  // length instead of min_height_m and min_line_length_m: the footprint
+  // already says a building stands there, so the heuristics that keep
+  // hedges, cars and tree crowns out can let garages and garden sheds in
+  // (on `realistic` seed 2 from the simulator's edges plane completeness
+  // 66 -> 76 %, correctness 86 -> 88 %).
+  double footprint_min_height_m = 1.5;
+  double footprint_min_line_length_m = 1.5;
   // With footprints: a plane is kept when at least footprint_min_inside of
   // its patch lies over footprints, and cut into one plane per footprint
   // it covers by at least footprint_min_piece_m2 (smaller overlaps are

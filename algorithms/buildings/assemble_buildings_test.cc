@@ -307,6 +307,25 @@ TEST(AssembleBuildingsFootprints, EveryPlaneAndFootprintEndsSomewhere) {
   ExpectAllValid(r);
 }
 
+TEST(AssembleBuildingsFootprints, AFootprintLetsAGardenShedIn) {
+  // A 3 x 2.5 m flat shed roof 2.1 m above the ground, its longest line 2.5 m.
+  std::vector<RoofPlaneHypothesis> planes = {
+      Hyp({0, 0, 1, -2.1}, {{0.2, 0.2}, {2.8, 0.2}, {2.8, 2.3}, {0.2, 2.3}})};
+  planes[0].longest_line_m = 2.5;
+  const AssemblyResult without = AssembleBuildings(planes, Flat(0));
+  EXPECT_TRUE(without.model.buildings.empty());
+  const AssemblyResult with =
+      AssembleBuildings(planes, Flat(0), {}, {Fp("shed", {{0, 0}, {3, 0}, {3, 2.5}, {0, 2.5}})});
+  ASSERT_EQ(with.model.buildings.size(), 1u);
+  EXPECT_NEAR(with.model.buildings[0].measured_height, 2.1, 1e-9);
+  ExpectAllValid(with);
+  // Still not a car or a hedge: 1.2 m is below footprint_min_height_m.
+  planes[0].plane = {0, 0, 1, -1.2};
+  EXPECT_TRUE(
+      AssembleBuildings(planes, Flat(0), {}, {Fp("shed", {{0, 0}, {3, 0}, {3, 2.5}, {0, 2.5}})})
+          .model.buildings.empty());
+}
+
 TEST(Polygon2, IntersectNonConvex) {
   const Ring2 l = {{0, 0}, {12, 0}, {12, 5}, {5, 5}, {5, 12}, {0, 12}};
   EXPECT_FALSE(IsConvexRing(l));

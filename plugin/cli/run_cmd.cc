@@ -63,6 +63,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "the FID)")
       .Option("-min_height", &r.assembly.min_height_m, "M",
               "lowest roof plane above the ground (default 2.5)")
+      .Option("-footprint_min_height", &r.assembly.footprint_min_height_m, "M",
+              "... over a footprint, when footprints are given (default 1.5)")
       .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",
               "steepest roof plane (default 70)")
       .Option("-min_lines", &r.grouping.min_lines, "N",

@@ -174,7 +174,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // assembly rejects anyway. Without a ground model everything is swept.
   std::vector<SweepLine> lines;
   int near_ground = 0;
-  const double min_line_height = 0.5 * r.assembly.min_height_m;
+  const double min_line_height =
+      0.5 * (footprints.empty() ? r.assembly.min_height_m : r.assembly.footprint_min_height_m);
   for (const Line3D& l : matched.lines) {
     if (block.ground.Known()) {
       const Eigen::Vector3d& a = l.segment.a;
