@@ -21,6 +21,10 @@ struct RoofPlaneHypothesis {
   double longest_line_m = 0;           // length of the longest of them
   double similarity = 0;               // mean Sim of its half-planes
   std::string id;                      // for the log ("plane 12")
+  // Proposed by a completion step from another plane rather than found by
+  // the sweep over this patch: in conflicts it yields to every found plane
+  // (completion fills gaps, it does not overrule direct evidence).
+  bool derived = false;
 };
 
 // Options of AssembleBuildings. Lengths in metres.

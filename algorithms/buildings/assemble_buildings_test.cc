@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/solid_check.h"
 
@@ -324,6 +325,52 @@ TEST(AssembleBuildingsFootprints, AFootprintLetsAGardenShedIn) {
   EXPECT_TRUE(
       AssembleBuildings(planes, Flat(0), {}, {Fp("shed", {{0, 0}, {3, 0}, {3, 2.5}, {0, 2.5}})})
           .model.buildings.empty());
+}
+
+TEST(FootprintCompletion, TerraceNeighboursShareTheirRoofPlanes) {
+  // A row of three 6 x 10 m houses under one gable roof (ridge along x at
+  // y = 5); the sweep found the front slope over the first house only and
+  // both slopes over the third.
+  const double ridge_z = 6 + 5 * std::tan(35 * M_PI / 180);
+  const Eigen::Vector4d front = SlopedPlane({0, 5, ridge_z}, 35, -90);
+  const Eigen::Vector4d back = SlopedPlane({0, 5, ridge_z}, 35, 90);
+  std::vector<RoofPlaneHypothesis> planes = {Hyp(front, {{0, 0}, {6, 0}, {6, 5}, {0, 5}}),
+                                             Hyp(front, {{12, 0}, {18, 0}, {18, 5}, {12, 5}}),
+                                             Hyp(back, {{12, 5}, {18, 5}, {18, 10}, {12, 10}})};
+  planes[0].id = "a";
+  planes[1].id = "b";
+  planes[2].id = "c";
+  const std::vector<Footprint> row = {Fp("h1", {{0, 0}, {6, 0}, {6, 10}, {0, 10}}),
+                                      Fp("h2", {{6, 0}, {12, 0}, {12, 10}, {6, 10}}),
+                                      Fp("h3", {{12, 0}, {18, 0}, {18, 10}, {12, 10}}),
+                                      Fp("far", {{40, 0}, {46, 0}, {46, 10}, {40, 10}})};
+  const std::vector<RoofPlaneHypothesis> proposed = PlanesFromNeighbourFootprints(planes, row);
+  // Only h2 gets proposals: the front slope (once, though both neighbours
+  // have it) and the back slope; h1 and h3 have no neighbour with planes
+  // they lack, the far house has no neighbour.
+  int front_h2 = 0, back_h2 = 0;
+  for (const RoofPlaneHypothesis& q : proposed) {
+    ASSERT_NE(q.id.find("extended over footprint h2"), std::string::npos) << q.id;
+    const bool is_front = q.plane.head<3>().dot(front.head<3>()) > 0.999;
+    (is_front ? front_h2 : back_h2) += 1;
+    // The patch is the band of the slope over h2: y within the source band.
+    for (const auto& v : q.patch) {
+      EXPECT_GE(v.x(), 6 - 1e-9);
+      EXPECT_LE(v.x(), 12 + 1e-9);
+      if (is_front) EXPECT_LE(v.y(), 5 + 1e-9);
+      if (!is_front) EXPECT_GE(v.y(), 5 - 1e-9);
+    }
+  }
+  EXPECT_EQ(front_h2, 1);
+  EXPECT_EQ(back_h2, 1);
+  // Once h2 has its planes, h1 is offered the back slope, named after the
+  // plane found over h3; h3 has both already.
+  std::vector<RoofPlaneHypothesis> more = planes;
+  for (const RoofPlaneHypothesis& q : proposed) more.push_back(q);
+  const std::vector<RoofPlaneHypothesis> next = PlanesFromNeighbourFootprints(more, row);
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].id, "c extended over footprint h1");
+  EXPECT_GT(next[0].plane.head<3>().dot(back.head<3>()), 0.999);
 }
 
 TEST(Polygon2, IntersectNonConvex) {

@@ -108,8 +108,10 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   std::vector<RoofPlaneHypothesis>& p = *planes;
   std::vector<int> by_score(p.size());
   std::iota(by_score.begin(), by_score.end(), 0);
-  std::stable_sort(by_score.begin(), by_score.end(),
-                   [&](int a, int b) { return p[a].score > p[b].score; });
+  std::stable_sort(by_score.begin(), by_score.end(), [&](int a, int b) {
+    if (p[a].derived != p[b].derived) return !p[a].derived;
+    return p[a].score > p[b].score;
+  });
   std::vector<std::string> rejected;
   std::vector<int> kept;
   for (int k : by_score) {

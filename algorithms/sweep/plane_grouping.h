@@ -60,8 +60,9 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
                                const GroupingOptions& options = {});
 
 // Conflict management: strongest first (RoofPlaneHypothesis::score, e.g.
-// patch area x verified photometric score), a plane whose patch overlaps a
-// kept one's by more than max_overlap is dropped. Returns the reasons.
+// patch area x verified photometric score; derived planes after all found
+// ones), a plane whose patch overlaps a kept one's by more than max_overlap
+// is dropped. Returns the reasons.
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           double max_overlap);
 

@@ -87,6 +87,23 @@ TEST(PlaneGrouping, FarApartCoplanarFacesStaySeparateAndConflictsResolve) {
   EXPECT_NE(rejected[0].find("line 1"), std::string::npos) << rejected[0];
 }
 
+TEST(PlaneGrouping, DerivedPlanesYieldToFoundOnesInConflicts) {
+  RoofPlaneHypothesis found, derived;
+  found.id = "found";
+  found.patch = {{0, 0}, {10, 0}, {10, 5}, {0, 5}};
+  found.score = 1;
+  derived.id = "derived";
+  derived.patch = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  derived.score = 100;  // larger and better scored, but only proposed
+  derived.derived = true;
+  std::vector<RoofPlaneHypothesis> planes = {derived, found};
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, 0.5);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "found");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind("derived: overlaps the stronger found", 0), 0u) << rejected[0];
+}
+
 TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
   Gable g;
   const std::vector<HalfPlane> hps = {

@@ -7,9 +7,11 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/format.h"
 #include "algorithms/geometry/block_overview.h"
@@ -294,6 +296,47 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                                     n_verified, roof_planes.size(), verified.size()),
                           Since(t0)});
     roof_planes = std::move(verified);
+  }
+
+  // Completion by footprints: planes of neighbouring footprints (terraced
+  // houses) proposed over each footprint, verified like the others, and
+  // kept where they conflict with no plane found directly; repeated while
+  // it confirms new planes, so that a row is completed from any house the
+  // sweep found.
+  if (!footprints.empty()) {
+    t0 = Clock::now();
+    std::set<std::string> tried;
+    int proposed = 0, confirmed = 0;
+    for (int round = 0; round < 20; ++round) {
+      std::vector<RoofPlaneHypothesis> extra;
+      for (RoofPlaneHypothesis& q : PlanesFromNeighbourFootprints(roof_planes, footprints))
+        if (tried.insert(q.id).second) extra.push_back(std::move(q));
+      if (extra.empty()) break;
+      proposed += static_cast<int>(extra.size());
+      SubProgress none(progress, 0.99, 0.99);
+      const std::vector<PlaneVerification> checks =
+          VerifyPlanes(block, images, extra, r.verify, none);
+      int now = 0;
+      for (size_t i = 0; i < extra.size(); ++i) {
+        if (!checks[i].accepted) {
+          out.rejected.push_back(extra[i].id + ": " + checks[i].reason);
+          continue;
+        }
+        extra[i].similarity = checks[i].score;
+        extra[i].score = std::abs(SignedArea(extra[i].patch)) * checks[i].score;
+        roof_planes.push_back(std::move(extra[i]));
+        ++now;
+      }
+      const std::vector<std::string> conflicts =
+          ResolveConflicts(&roof_planes, r.grouping.max_overlap);
+      out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+      confirmed += now;
+      if (now == 0) break;
+    }
+    out.stages.push_back(
+        {"footprint completion",
+         StrFormat("%d planes of neighbours proposed, %d confirmed", proposed, confirmed),
+         Since(t0)});
   }
 
   t0 = Clock::now();

@@ -1,0 +1,90 @@
+#include "algorithms/buildings/footprint_completion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "algorithms/buildings/polygon2.h"
+#include "algorithms/core/format.h"
+
+namespace roofsweep {
+namespace {
+
+constexpr const char* kExtended = " extended over footprint ";
+
+// Plan distance between two rings that do not overlap (vertex to edge,
+// both ways).
+double RingGap(const Ring2& a, const Ring2& b) {
+  double d = std::numeric_limits<double>::infinity();
+  for (int pass = 0; pass < 2; ++pass) {
+    const Ring2& p = pass ? b : a;
+    const Ring2& q = pass ? a : b;
+    for (const auto& v : p)
+      for (size_t i = 0; i < q.size(); ++i)
+        d = std::min(d, PointSegmentDistance(v, q[i], q[(i + 1) % q.size()]));
+  }
+  return d;
+}
+
+}  // namespace
+
+std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
+    const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
+    const FootprintCompletionOptions& o) {
+  const size_t nf = footprints.size();
+  // The planes over each footprint.
+  std::vector<std::vector<int>> over(nf);
+  for (size_t f = 0; f < nf; ++f)
+    for (size_t i = 0; i < planes.size(); ++i)
+      if (IntersectionArea(planes[i].patch, footprints[f].outline) >= o.min_over_neighbour_m2)
+        over[f].push_back(static_cast<int>(i));
+  auto same_plane = [&](const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b) {
+    return a.plane.head<3>().dot(b.plane.head<3>()) >= std::cos(o.same_angle_deg * M_PI / 180) &&
+           std::abs(a.plane[3] - b.plane[3]) <= o.same_offset_m;
+  };
+  std::vector<RoofPlaneHypothesis> out;
+  for (size_t f = 0; f < nf; ++f) {
+    const Ring2& outline = footprints[f].outline;
+    if (std::abs(SignedArea(outline)) <= 0) continue;
+    const Ring2 hull = ConvexHull(outline);
+    std::vector<RoofPlaneHypothesis> mine;
+    for (size_t g = 0; g < nf; ++g) {
+      if (g == f || over[g].empty() || RingGap(outline, footprints[g].outline) > o.neighbour_gap_m)
+        continue;
+      for (int i : over[g]) {
+        const RoofPlaneHypothesis& p = planes[i];
+        Ring2 patch = hull;
+        const Eigen::Vector2d n2 = p.plane.head<2>();
+        if (n2.norm() > 1e-6) {
+          // The band the neighbour's patch spans across the slope.
+          const Eigen::Vector2d u = n2.normalized();
+          double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+          for (const auto& v : p.patch) lo = std::min(lo, v.dot(u)), hi = std::max(hi, v.dot(u));
+          patch = ClipHalfPlane(patch, u.x(), u.y(), -hi);   // v.u <= hi
+          patch = ClipHalfPlane(patch, -u.x(), -u.y(), lo);  // v.u >= lo
+        }
+        if (patch.size() < 3 || SignedArea(patch) < o.min_patch_m2) continue;
+        bool same = false;
+        for (const RoofPlaneHypothesis& q : mine) same = same || same_plane(q, p);
+        // The footprint has this plane over the band already. A plane of
+        // its own over part of the band, or another plane there, does not
+        // stop the proposal: verification and conflict management choose.
+        for (int j : over[f])
+          same = same || (same_plane(planes[j], p) && IntersectionArea(planes[j].patch, patch) >=
+                                                          o.same_cover * SignedArea(patch));
+        if (same) continue;
+        RoofPlaneHypothesis q = p;
+        q.patch = std::move(patch);
+        q.score = 0;
+        q.derived = true;
+        // Named after the plane the sweep found, not the chain of houses.
+        q.id = p.id.substr(0, p.id.find(kExtended)) + kExtended + footprints[f].id;
+        mine.push_back(std::move(q));
+      }
+    }
+    for (RoofPlaneHypothesis& q : mine) out.push_back(std::move(q));
+  }
+  return out;
+}
+
+}  // namespace roofsweep
