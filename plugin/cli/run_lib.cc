@@ -72,6 +72,22 @@ std::optional<Eigen::Vector4d> BlockExtent(const Block& block) {
   return any ? std::optional<Eigen::Vector4d>(e) : std::nullopt;
 }
 
+// Appends the planes the verification confirmed to `kept`, scored by the
+// verified evidence (patch area x score); the others' reasons to `rejected`.
+void KeepVerified(std::vector<RoofPlaneHypothesis> planes,
+                  const std::vector<PlaneVerification>& checks,
+                  std::vector<RoofPlaneHypothesis>* kept, std::vector<std::string>* rejected) {
+  for (size_t i = 0; i < planes.size(); ++i) {
+    if (!checks[i].accepted) {
+      rejected->push_back(planes[i].id + ": " + checks[i].reason);
+      continue;
+    }
+    planes[i].similarity = checks[i].score;
+    planes[i].score = std::abs(SignedArea(planes[i].patch)) * checks[i].score;
+    kept->push_back(std::move(planes[i]));
+  }
+}
+
 void WriteReport(const std::string& path, const RunSummary& s) {
   nlohmann::json j;
   for (const RunStage& st : s.stages)
@@ -278,22 +294,15 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     SubProgress verify_progress(progress, 0.95, 0.99);
     const std::vector<PlaneVerification> checks =
         VerifyPlanes(block, images, roof_planes, r.verify, verify_progress);
+    const size_t n_planes = roof_planes.size();
     std::vector<RoofPlaneHypothesis> verified;
-    for (size_t i = 0; i < roof_planes.size(); ++i) {
-      if (!checks[i].accepted) {
-        out.rejected.push_back(roof_planes[i].id + ": " + checks[i].reason);
-        continue;
-      }
-      roof_planes[i].similarity = checks[i].score;
-      roof_planes[i].score = std::abs(SignedArea(roof_planes[i].patch)) * checks[i].score;
-      verified.push_back(std::move(roof_planes[i]));
-    }
+    KeepVerified(std::move(roof_planes), checks, &verified, &out.rejected);
     const size_t n_verified = verified.size();
     const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping.max_overlap);
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
     out.stages.push_back({"verification",
                           StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
-                                    n_verified, roof_planes.size(), verified.size()),
+                                    n_verified, n_planes, verified.size()),
                           Since(t0)});
     roof_planes = std::move(verified);
   }
@@ -316,17 +325,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       SubProgress none(progress, 0.99, 0.99);
       const std::vector<PlaneVerification> checks =
           VerifyPlanes(block, images, extra, r.verify, none);
-      int now = 0;
-      for (size_t i = 0; i < extra.size(); ++i) {
-        if (!checks[i].accepted) {
-          out.rejected.push_back(extra[i].id + ": " + checks[i].reason);
-          continue;
-        }
-        extra[i].similarity = checks[i].score;
-        extra[i].score = std::abs(SignedArea(extra[i].patch)) * checks[i].score;
-        roof_planes.push_back(std::move(extra[i]));
-        ++now;
-      }
+      const size_t before = roof_planes.size();
+      KeepVerified(std::move(extra), checks, &roof_planes, &out.rejected);
+      const int now = static_cast<int>(roof_planes.size() - before);
       const std::vector<std::string> conflicts =
           ResolveConflicts(&roof_planes, r.grouping.max_overlap);
       out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());

@@ -97,6 +97,21 @@ rejected = json.load(open(report))["rejected"]
 for i in ids - built:
     assert any(x.startswith("footprint " + i + ":") for x in rejected), (i, rejected)
 PY
+  # Footprints named in the block manifest are used without -footprints
+  # (a second manifest beside the first, so that its paths stay valid).
+  python3 - "$SIM/block.json" "$SIM/block_fp.json" <<'PY' \
+    || { fail run_fp_manifest "cannot write the manifest"; return; }
+import json, sys
+m = json.load(open(sys.argv[1]))
+m["footprints"] = {"path": "footprints.gpkg", "layer": "footprints"}
+json.dump(m, open(sys.argv[2], "w"), indent=1)
+PY
+  expect_ok run_fp_manifest run "$SIM/block_fp.json" -o "$WORK/fpm.gpkg" -q
+  python3 - "$WORK/fpm.gpkg" <<'PY' && pass run_fp_manifest_labels || fail run_fp_manifest_labels "no footprint_id"
+import sqlite3, sys
+rows = sqlite3.connect(sys.argv[1]).execute("select footprint_id from buildings").fetchall()
+assert rows and all(r[0] for r in rows), rows
+PY
   expect_ok run_fp_convert convert "$WORK/fp.gpkg" "$WORK/fp.gml"
   grep -q "failing the solid checks" "$WORK/stdout.txt" && fail run_fp_solids "$(cat "$WORK/stdout.txt")" \
     || pass run_fp_solids
