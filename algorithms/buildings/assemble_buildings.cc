@@ -211,21 +211,6 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
   return keep;
 }
 
-Eigen::Vector4d Bounds(const Ring2& r) {
-  Eigen::Vector4d b(
-      std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-      -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
-  for (const auto& p : r) {
-    b[0] = std::min(b[0], p.x()), b[1] = std::min(b[1], p.y());
-    b[2] = std::max(b[2], p.x()), b[3] = std::max(b[3], p.y());
-  }
-  return b;
-}
-
-bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
-  return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
-}
-
 // Cuts every plane's patch at the footprints: one copy per footprint it
 // covers (a plane found across a row of terraced houses becomes one plane
 // per house), dropping planes that lie mostly outside every footprint.
@@ -235,13 +220,13 @@ std::vector<RoofPlaneHypothesis> CutAtFootprints(
     const std::vector<Footprint>& footprints, const AssemblyOptions& o,
     std::vector<int>* footprint_of, std::vector<int>* origin, std::vector<std::string>* rejected) {
   std::vector<Eigen::Vector4d> bounds;
-  for (const Footprint& f : footprints) bounds.push_back(Bounds(f.outline));
+  for (const Footprint& f : footprints) bounds.push_back(RingBounds(f.outline));
   std::vector<RoofPlaneHypothesis> out;
   for (int i : keep) {
     const RoofPlaneHypothesis& p = planes[i];
     const std::string name = p.id.empty() ? StrFormat("plane %d", i) : p.id;
     const double area = std::abs(SignedArea(p.patch));
-    const Eigen::Vector4d pb = Bounds(p.patch);
+    const Eigen::Vector4d pb = RingBounds(p.patch);
     std::vector<std::pair<int, std::vector<Ring2>>> over;
     double inside = 0;
     for (size_t f = 0; f < footprints.size(); ++f) {
@@ -503,6 +488,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     const int f = footprint_of[root];
     const Footprint* fp = f >= 0 ? &footprints[f] : nullptr;
     std::optional<Envelope> env;
+    std::optional<Building> solid;  // built (and found valid) over the footprint already
     std::vector<int> active = members;
     std::string outline_source = "roof planes";
     // 3a. A footprint is the outline of one building made of all the
@@ -522,12 +508,15 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         whole[f] = -1;
         Envelope e = LowerEnvelope(planes, planes_over[f], fp->outline, grown, ground, o,
                                    o.footprint_min_support);
-        if (e.worst < 0 && std::isfinite(e.ground_z) &&
-            CheckBuildingSolid(BuildSolid(planes, planes_over[f], e, o)).Valid()) {
+        if (e.worst < 0 && std::isfinite(e.ground_z))
+          solid = BuildSolid(planes, planes_over[f], e, o);
+        if (solid && CheckBuildingSolid(*solid).Valid()) {
           env = std::move(e);
           active = planes_over[f];
           outline_source = "footprint";
           whole[f] = 1;
+        } else {
+          solid.reset();
         }
       }
     }
@@ -571,7 +560,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       continue;
     }
 
-    Building b = BuildSolid(planes, active, *env, o);
+    Building b = solid ? std::move(*solid) : BuildSolid(planes, active, *env, o);
     b.id = StrFormat("rs_b%04d", static_cast<int>(res.model.buildings.size()) + 1);
     // Convex parts of one building (split at valleys) share this number.
     b.double_attributes["building_group"] = static_cast<double>(origin[uf.Find(root)]);

@@ -357,8 +357,11 @@ TEST(FootprintCompletion, TerraceNeighboursShareTheirRoofPlanes) {
     for (const auto& v : q.patch) {
       EXPECT_GE(v.x(), 6 - 1e-9);
       EXPECT_LE(v.x(), 12 + 1e-9);
-      if (is_front) EXPECT_LE(v.y(), 5 + 1e-9);
-      if (!is_front) EXPECT_GE(v.y(), 5 - 1e-9);
+      if (is_front) {
+        EXPECT_LE(v.y(), 5 + 1e-9);
+      } else {
+        EXPECT_GE(v.y(), 5 - 1e-9);
+      }
     }
   }
   EXPECT_EQ(front_h2, 1);

@@ -32,12 +32,19 @@ std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
     const FootprintCompletionOptions& o) {
   const size_t nf = footprints.size();
-  // The planes over each footprint.
+  // The planes over each footprint; bounding boxes keep the clipping to
+  // the pairs that can meet (a city tile has thousands of footprints).
+  std::vector<Eigen::Vector4d> fb(nf), pb(planes.size());
+  for (size_t f = 0; f < nf; ++f) fb[f] = RingBounds(footprints[f].outline);
+  for (size_t i = 0; i < planes.size(); ++i) pb[i] = RingBounds(planes[i].patch);
   std::vector<std::vector<int>> over(nf);
   for (size_t f = 0; f < nf; ++f)
     for (size_t i = 0; i < planes.size(); ++i)
-      if (IntersectionArea(planes[i].patch, footprints[f].outline) >= o.min_over_neighbour_m2)
+      if (BoundsMeet(fb[f], pb[i]) &&
+          IntersectionArea(planes[i].patch, footprints[f].outline) >= o.min_over_neighbour_m2)
         over[f].push_back(static_cast<int>(i));
+  const Eigen::Vector4d gap(-o.neighbour_gap_m, -o.neighbour_gap_m, o.neighbour_gap_m,
+                            o.neighbour_gap_m);
   auto same_plane = [&](const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b) {
     return a.plane.head<3>().dot(b.plane.head<3>()) >= std::cos(o.same_angle_deg * M_PI / 180) &&
            std::abs(a.plane[3] - b.plane[3]) <= o.same_offset_m;
@@ -49,7 +56,8 @@ std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
     const Ring2 hull = ConvexHull(outline);
     std::vector<RoofPlaneHypothesis> mine;
     for (size_t g = 0; g < nf; ++g) {
-      if (g == f || over[g].empty() || RingGap(outline, footprints[g].outline) > o.neighbour_gap_m)
+      if (g == f || over[g].empty() || !BoundsMeet(fb[f] + gap, fb[g]) ||
+          RingGap(outline, footprints[g].outline) > o.neighbour_gap_m)
         continue;
       for (int i : over[g]) {
         const RoofPlaneHypothesis& p = planes[i];

@@ -9,6 +9,7 @@
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
+#include <limits>
 
 namespace roofsweep {
 namespace {
@@ -53,6 +54,20 @@ bool SegmentsMeet(const Eigen::Vector2d& p1, const Eigen::Vector2d& p2, const Ei
 }
 
 }  // namespace
+
+Eigen::Vector4d RingBounds(const Ring2& r) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Eigen::Vector4d b(kInf, kInf, -kInf, -kInf);
+  for (const auto& p : r) {
+    b[0] = std::min(b[0], p.x()), b[1] = std::min(b[1], p.y());
+    b[2] = std::max(b[2], p.x()), b[3] = std::max(b[3], p.y());
+  }
+  return b;
+}
+
+bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
+}
 
 std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b) {
   std::vector<Ring2> out;

@@ -13,6 +13,12 @@ namespace roofsweep {
 // only for convex ones. Kept in this one translation unit because the
 // Boost.Geometry set operations are heavy to compile.
 
+// Plan-view bounding box (min x, min y, max x, max y); for an empty ring
+// min > max, which meets nothing.
+Eigen::Vector4d RingBounds(const Ring2& ring);
+// True when two bounding boxes overlap or touch.
+bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b);
+
 // The pieces of a ∩ b, each counter-clockwise, first vertex not repeated;
 // empty when they do not overlap. Either ring may have either orientation.
 std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b);

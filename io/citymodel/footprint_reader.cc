@@ -245,7 +245,7 @@ class Reader {
           Note(who, why);
           continue;
         }
-        if (options_.extent && !Meets(fp.outline, *options_.extent)) continue;
+        if (options_.extent && !BoundsMeet(RingBounds(fp.outline), *options_.extent)) continue;
         out.push_back(std::move(fp));
       }
     }
@@ -391,12 +391,6 @@ class Reader {
     // Counter-clockwise with the same first vertex.
     if (area < 0) std::reverse(ring.begin() + 1, ring.end());
     return ring;
-  }
-
-  static bool Meets(const Ring2& ring, const Eigen::Vector4d& box) {
-    Eigen::Vector2d lo = ring.front(), hi = ring.front();
-    for (const Eigen::Vector2d& p : ring) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    return hi.x() >= box(0) && lo.x() <= box(2) && hi.y() >= box(1) && lo.y() <= box(3);
   }
 
   const std::string& path_;
