@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/core/error.h"
 #include "algorithms/geometry/view.h"
 #include "algorithms/sweep/plane_fit.h"
 #include "algorithms/sweep/side_similarity.h"
@@ -165,6 +166,10 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     else
       grey[v] = images[v];
   });
+  if (!(o.spacing_m > 0) || !std::isfinite(o.spacing_m))
+    throw Error("VerifyOptions: spacing_m must be > 0");
+  // A grid finer than 1 cm adds no pixels at any aerial GSD, only time.
+  const double min_spacing = std::max(o.min_spacing_m, 0.01);
   std::vector<PlaneVerification> out(planes.size());
   ReportOrCancel(progress, 0.0, "verifying planes");
   tbb::parallel_for(size_t{0}, planes.size(), [&](size_t i) {
@@ -178,10 +183,19 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     for (const auto& q : p.patch)
       x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
       y1 = std::max(y1, q.y());
+    // Small faces (dormers, hip ends, porches) hold few grid points at
+    // spacing_m: the grid is refined for them, so that the texture, not the
+    // grid, decides whether a face can be verified.
     std::vector<Eigen::Vector3d> samples;
-    for (double y = y0 + 0.5 * o.spacing_m; y < y1; y += o.spacing_m)
-      for (double x = x0 + 0.5 * o.spacing_m; x < x1; x += o.spacing_m)
-        if (InsideConvex(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
+    for (double spacing = o.spacing_m;; spacing *= 0.5) {
+      samples.clear();
+      for (double y = y0 + 0.5 * spacing; y < y1; y += spacing)
+        for (double x = x0 + 0.5 * spacing; x < x1; x += spacing)
+          if (InsideConvex(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
+      if (static_cast<int>(samples.size()) >= 4 * o.min_samples ||
+          0.5 * spacing < min_spacing * (1 - 1e-9))
+        break;
+    }
     const Scores at = ScorePlane(block, grey, samples, p.plane, o);
     v.samples = at.n;
     if (at.n < o.min_samples) {

@@ -69,6 +69,34 @@ TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
   }
 }
 
+// A dormer-sized patch (1.4 x 1.2 m in plan) holds fewer than min_samples
+// points of the 0.25 m grid; the refined grid verifies it, and still refutes
+// it at the wrong height.
+TEST(VerifyPlanes, SmallPatchIsVerifiedOnARefinedGrid) {
+  TestScene scene;
+  scene.quads = {Face(true)};
+  const Quad f = Face(true);
+  std::vector<RoofPlaneHypothesis> planes = {Hypothesis(f), Hypothesis(f, 1.5)};
+  for (RoofPlaneHypothesis& h : planes)
+    h.patch = {{-0.7, 2.4}, {0.7, 2.4}, {0.7, 3.6}, {-0.7, 3.6}};
+  const auto v = Verify(scene, planes);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_TRUE(v[0].accepted) << v[0].reason;
+  EXPECT_GE(v[0].samples, 32);
+  EXPECT_FALSE(v[1].accepted) << "score " << v[1].score << " " << v[1].reason;
+
+  // The same patch on the coarse grid alone cannot be verified.
+  VerifyOptions coarse;
+  coarse.min_spacing_m = coarse.spacing_m;
+  const Block block = sweep_test::FourViewBlock();
+  NullProgress progress;
+  const auto c =
+      VerifyPlanes(block, sweep_test::RenderAll(scene, block), {planes[0]}, coarse, progress);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_FALSE(c[0].accepted);
+  EXPECT_LT(c[0].samples, 32);
+}
+
 TEST(VerifyPlanes, UntexturedPatchCannotBeVerified) {
   TestScene scene;
   scene.quads = {Face(false)};
