@@ -87,6 +87,10 @@ std::string FormatTable(const EvalResult& r) {
     t.Row("precision", Pct(l.precision),
           Fmt(l.raw.result_on_reference_m, "%.1f") + " of " + Fmt(l.raw.result_length_m, "%.1f m") +
               ", " + std::to_string(l.raw.segments) + " segments");
+    t.Row("on a surface, no edge", Pct(l.on_surface),
+          std::isfinite(r.options.lines.ground_height) ? "texture, shadows (roofs, walls, terrain)"
+                                                       : "texture, shadows (roofs, walls)");
+    t.Row("off every surface", Pct(l.off_surface), "mismatches, trees");
     t.Row(
         "completeness", Pct(l.completeness),
         Fmt(l.raw.reference_covered_m, "%.1f") + " of " + Fmt(l.raw.reference_length_m, "%.1f m"));
@@ -149,6 +153,8 @@ nlohmann::json ToJson(const EvalResult& r) {
                   {"precision", Num(l.precision)},
                   {"completeness", Num(l.completeness)},
                   {"roof_edge_completeness", Num(l.roof_edge_completeness)},
+                  {"on_surface", Num(l.on_surface)},
+                  {"off_surface", Num(l.off_surface)},
                   {"segments", l.raw.segments},
                   {"result_length_m", l.raw.result_length_m},
                   {"reference_length_m", l.raw.reference_length_m},

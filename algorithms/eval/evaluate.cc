@@ -359,8 +359,17 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
     static const std::vector<Segment3> kNone;
     Lines3dScores& l = out.lines3d;
     l.evaluated = true;
-    l.raw = eval::EvaluateLines(
-        *lines, edges, extra_reference_segments ? *extra_reference_segments : kNone, options.lines);
+    std::vector<Polygon3> surfaces;
+    for (const auto& b : truth.buildings)
+      for (const auto& sf : b.surfaces)
+        surfaces.insert(surfaces.end(), sf.polygons.begin(), sf.polygons.end());
+    l.raw = eval::EvaluateLines(*lines, edges,
+                                extra_reference_segments ? *extra_reference_segments : kNone,
+                                options.lines, &surfaces);
+    l.on_surface = Ratio(l.raw.result_on_surface_m, l.raw.result_length_m);
+    l.off_surface =
+        Ratio(l.raw.result_length_m - l.raw.result_on_reference_m - l.raw.result_on_surface_m,
+              l.raw.result_length_m);
     l.precision = Ratio(l.raw.result_on_reference_m, l.raw.result_length_m);
     l.completeness = Ratio(l.raw.reference_covered_m, l.raw.reference_length_m);
     l.roof_edge_completeness = Ratio(l.raw.roof_edge_covered_m, l.raw.roof_edge_length_m);

@@ -108,6 +108,9 @@ struct Lines3dScores {
   bool evaluated = false;  // false when no lines were given
   eval::LineScores raw;
   std::optional<double> precision, completeness, roof_edge_completeness;
+  // Share of the result length on a true surface but no edge (see
+  // LineScores::result_on_surface_m), and off every surface.
+  std::optional<double> on_surface, off_surface;
 };
 
 // Roof polygons each model had to leave out (see RoofPlaneSet).

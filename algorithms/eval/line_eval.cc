@@ -52,6 +52,80 @@ class SegmentGrid {
   std::unordered_map<long long, std::vector<int>> cells_;
 };
 
+// Reference polygons bucketed like SegmentGrid, for "is p within d of a
+// surface": plane distance, then the even-odd test in the plane's
+// projection onto the axis plane it is least inclined to.
+class PolygonGrid {
+ public:
+  PolygonGrid(const std::vector<Polygon3>& polygons, double margin, double cell) : cell_(cell) {
+    for (const Polygon3& p : polygons) {
+      if (p.exterior.size() < 3) continue;
+      Entry e;
+      e.n = p.Normal();
+      if (e.n.norm() < 0.5) continue;  // degenerate ring
+      e.d = -e.n.dot(p.exterior[0]);
+      int drop = 0;
+      e.n.cwiseAbs().maxCoeff(&drop);
+      e.u = drop == 0 ? 1 : 0;
+      e.v = drop == 2 ? 1 : 2;
+      auto flat = [&](const std::vector<Eigen::Vector3d>& ring) {
+        std::vector<Eigen::Vector2d> r;
+        for (const auto& q : ring) r.emplace_back(q[e.u], q[e.v]);
+        return r;
+      };
+      e.rings.push_back(flat(p.exterior));
+      for (const auto& h : p.holes) e.rings.push_back(flat(h));
+      Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+      for (const auto& q : p.exterior) {
+        lo = lo.cwiseMin(q.head<2>());
+        hi = hi.cwiseMax(q.head<2>());
+      }
+      const int id = static_cast<int>(entries_.size());
+      entries_.push_back(std::move(e));
+      const long long x0 = Cell(lo.x() - margin), x1 = Cell(hi.x() + margin);
+      const long long y0 = Cell(lo.y() - margin), y1 = Cell(hi.y() + margin);
+      if ((x1 - x0 + 1) * (y1 - y0 + 1) > 1000000)
+        throw Error("3D line evaluation: a surface spans more than 10^6 grid cells");
+      for (long long x = x0; x <= x1; ++x)
+        for (long long y = y0; y <= y1; ++y) cells_[Key(x, y)].push_back(id);
+    }
+  }
+
+  bool Near(const Eigen::Vector3d& p, double dist) const {
+    const auto it = cells_.find(Key(Cell(p.x()), Cell(p.y())));
+    if (it == cells_.end()) return false;
+    for (int i : it->second) {
+      const Entry& e = entries_[i];
+      if (std::abs(e.n.dot(p) + e.d) > dist) continue;
+      const Eigen::Vector2d q(p[e.u], p[e.v]);
+      bool inside = false;
+      for (const auto& ring : e.rings)
+        for (size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++)
+          if ((ring[k].y() > q.y()) != (ring[j].y() > q.y()) &&
+              q.x() < (ring[j].x() - ring[k].x()) * (q.y() - ring[k].y()) /
+                              (ring[j].y() - ring[k].y()) +
+                          ring[k].x())
+            inside = !inside;
+      if (inside) return true;
+    }
+    return false;
+  }
+
+ private:
+  struct Entry {
+    Eigen::Vector3d n;
+    double d = 0;
+    int u = 0, v = 1;
+    std::vector<std::vector<Eigen::Vector2d>> rings;
+  };
+  long long Cell(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+  static long long Key(long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; }
+
+  std::vector<Entry> entries_;
+  double cell_;
+  std::unordered_map<long long, std::vector<int>> cells_;
+};
+
 // Length of `s` whose sample points satisfy `grid.Near`.
 double CoveredLength(const Segment3& s, const SegmentGrid& grid, const LineEvalOptions& o,
                      double cos_angle) {
@@ -117,7 +191,7 @@ std::vector<Segment3> RoofEdges(const CityModel& model, const LineEvalOptions& o
 LineScores EvaluateLines(const std::vector<Segment3>& result,
                          const std::vector<Segment3>& roof_edges,
                          const std::vector<Segment3>& extra_reference,
-                         const LineEvalOptions& options) {
+                         const LineEvalOptions& options, const std::vector<Polygon3>* surfaces) {
   if (!(options.distance_m >= 0) || !(options.sample_step_m > 0))
     throw Error("3D line evaluation: distance must be >= 0 and sample step > 0");
   const double cos_angle = std::cos(options.angle_deg * M_PI / 180.0);
@@ -132,9 +206,27 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
   for (const auto& l : extra_reference) ref.push_back(&l);
   const SegmentGrid res_grid(res, options.distance_m, cell);
   const SegmentGrid ref_grid(ref, options.distance_m, cell);
+  const bool with_surfaces = surfaces != nullptr || std::isfinite(options.ground_height);
+  static const std::vector<Polygon3> kNone;
+  const PolygonGrid surface_grid(surfaces ? *surfaces : kNone, options.distance_m, cell);
   for (const auto& l : result) {
-    s.result_length_m += l.Length();
-    s.result_on_reference_m += CoveredLength(l, ref_grid, options, cos_angle);
+    const double len = l.Length();
+    s.result_length_m += len;
+    if (len <= 0) continue;
+    const int n = std::max(1, static_cast<int>(std::ceil(len / options.sample_step_m)));
+    const Eigen::Vector3d dir = l.Direction();
+    int on_edge = 0, on_surface = 0;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector3d p = l.At((k + 0.5) / n);
+      if (ref_grid.Near(p, dir, options.distance_m, cos_angle)) {
+        ++on_edge;
+      } else if (with_surfaces && (std::abs(p.z() - options.ground_height) <= options.distance_m ||
+                                   surface_grid.Near(p, options.distance_m))) {
+        ++on_surface;
+      }
+    }
+    s.result_on_reference_m += len * on_edge / n;
+    s.result_on_surface_m += len * on_surface / n;
   }
   for (const auto& l : roof_edges) {
     const double c = CoveredLength(l, res_grid, options, cos_angle);

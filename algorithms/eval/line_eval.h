@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
@@ -22,6 +23,9 @@ struct LineEvalOptions {
   // Edges between two polygons this close to coplanar are not roof edges
   // (triangulated roof faces in real LoD2 data).
   double coplanar_angle_deg = 2.0;
+  // Height of flat terrain (NaN: unknown). Result lines within distance_m
+  // of it, or of a reference surface polygon, count as on a true surface.
+  double ground_height = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The distinct edges of the roof polygons (exterior rings and holes) of all
@@ -37,14 +41,22 @@ struct LineScores {
   double result_on_reference_m = 0;  // result length within tolerance of a reference segment
   double reference_covered_m = 0;    // reference length covered by a result segment
   double roof_edge_covered_m = 0;    // roof-edge length covered
+  // Result length on no reference segment but within distance_m of a
+  // reference surface or the terrain: lines of texture, tile courses,
+  // shadow borders or markings lying on the scene (geometrically right, yet
+  // no edge of the model), as against lines off every surface (mismatches,
+  // trees). Zero when no surfaces were given.
+  double result_on_surface_m = 0;
 };
 
 // Length-based comparison. precision = result_on_reference_m / result_length_m,
 // completeness = reference_covered_m / reference_length_m,
 // roof_edge_completeness = roof_edge_covered_m / roof_edge_length_m.
+// `surfaces`: the reference's polygons (roofs, walls, ground), optional.
 LineScores EvaluateLines(const std::vector<Segment3>& result,
                          const std::vector<Segment3>& roof_edges,
                          const std::vector<Segment3>& extra_reference,
-                         const LineEvalOptions& options);
+                         const LineEvalOptions& options,
+                         const std::vector<Polygon3>* surfaces = nullptr);
 
 }  // namespace roofsweep::eval

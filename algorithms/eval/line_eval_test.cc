@@ -102,6 +102,33 @@ TEST(EvaluateLines, DirectionToleranceRejectsCrossingSegments) {
   EXPECT_NEAR(t.reference_covered_m, 10, 0.05);
 }
 
+// A tile course in the middle of a roof face and a shadow border on the
+// terrain lie on true surfaces; the same lines a metre above do not.
+TEST(EvaluateLines, LinesOnASurfaceButNoEdgeAreCountedApart) {
+  const Polygon3 roof{{V(0, 0, 5), V(10, 0, 5), V(10, 8, 9), V(0, 8, 9)}, {}};
+  const std::vector<Polygon3> surfaces = {roof};
+  LineEvalOptions o;
+  o.ground_height = 0;
+  const Segment3 course{V(2, 4, 7), V(8, 4, 7)};          // inside the face, 6 m
+  const Segment3 shadow{V(20, 0, 0.02), V(20, 4, 0.02)};  // on the terrain, 4 m
+  const Segment3 above{V(2, 4, 8), V(8, 4, 8)};           // 1 m over the face, 6 m
+  const Segment3 eave{V(0, 0, 5), V(10, 0, 5)};           // a reference edge, 10 m
+  const auto s = EvaluateLines({course, shadow, above, eave}, {eave}, {}, o, &surfaces);
+  EXPECT_NEAR(s.result_length_m, 26, 1e-9);
+  EXPECT_NEAR(s.result_on_reference_m, 10, 0.05);
+  EXPECT_NEAR(s.result_on_surface_m, 10, 0.05);  // the course and the shadow, not the eave
+
+  // Without surfaces or terrain nothing is on a surface.
+  const auto none = EvaluateLines({course, shadow}, {eave}, {}, LineEvalOptions{});
+  EXPECT_EQ(none.result_on_surface_m, 0);
+
+  // A hole in the face (a courtyard, a skylight) is no surface.
+  const Polygon3 holed{roof.exterior, {{V(1, 3, 6.5), V(9, 3, 6.5), V(9, 5, 7.5), V(1, 5, 7.5)}}};
+  const std::vector<Polygon3> with_hole = {holed};
+  const auto h = EvaluateLines({course}, {eave}, {}, LineEvalOptions{}, &with_hole);
+  EXPECT_EQ(h.result_on_surface_m, 0);
+}
+
 TEST(EvaluateLines, ExtraReferenceSegmentsCountInCompletenessOnly) {
   CityModel box;
   box.buildings.push_back(eval_test::Box("B", 0, 0, 10, 8, 0, 5));

@@ -1,5 +1,6 @@
 #include "plugin/cli/eval_lib.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgproc.hpp>
@@ -45,6 +46,16 @@ EvalReport RunEval(const EvalRequest& r) {
     }
     const fs::path edges = fs::path(r.truth) / "groundtruth_edges.json";
     if (fs::exists(edges)) edges_path = edges.string();
+    // The simulated terrain is flat at the block's ground height: lines on
+    // it lie on a true surface.
+    const fs::path block_json = fs::path(r.truth) / "block.json";
+    if (fs::exists(block_json) && !std::isfinite(options.lines.ground_height)) {
+      std::ifstream f(block_json);
+      const auto j = nlohmann::json::parse(f, nullptr, false);
+      if (j.is_object() && j.contains("ground") && j["ground"].is_object() &&
+          j["ground"].contains("height") && j["ground"]["height"].is_number())
+        options.lines.ground_height = j["ground"]["height"].get<double>();
+    }
     const fs::path meta = fs::path(r.truth) / "simulation.json";
     if (options.gsd_m <= 0 && fs::exists(meta)) {
       std::ifstream f(meta);
