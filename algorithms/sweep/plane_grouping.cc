@@ -1,5 +1,6 @@
 #include "algorithms/sweep/plane_grouping.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,7 +21,69 @@ double Reliability(const HalfPlane& h) {
   return (h.accepted ? 1.0 : 0.0) + h.similarity * std::min(1.0, -h.curvature / 8.0);
 }
 
+// Area of the convex ring on either side of the plan line a x + b y + c = 0:
+// {a x + b y + c <= 0, > 0}.
+std::pair<double, double> SideAreas(const Ring2& ring, double a, double b, double c) {
+  return {std::abs(SignedArea(ClipHalfPlane(ring, a, b, c))),
+          std::abs(SignedArea(ClipHalfPlane(ring, -a, -b, -c)))};
+}
+
+// Parameter interval [t0, t1] of the plan line p + t u inside the convex
+// ring; empty (t0 > t1) when it misses it.
+std::pair<double, double> LineInterval(const Ring2& ring, const Eigen::Vector2d& p,
+                                       const Eigen::Vector2d& u) {
+  double t0 = -1e300, t1 = 1e300;
+  const double area = SignedArea(ring);
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const Eigen::Vector2d& a = ring[k];
+    const Eigen::Vector2d& b = ring[(k + 1) % ring.size()];
+    // Inside: left of every edge of a counter-clockwise ring.
+    Eigen::Vector2d nrm(-(b - a).y(), (b - a).x());
+    if (area < 0) nrm = -nrm;
+    const double den = nrm.dot(u), num = nrm.dot(a - p);
+    if (std::abs(den) < 1e-12) {
+      if (num > 0) return {1, 0};  // parallel and outside this edge
+      continue;
+    }
+    const double t = num / den;
+    if (den > 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+  }
+  return {t0, t1};
+}
+
 }  // namespace
+
+bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& o) {
+  if (p.patch.size() < 3 || q.patch.size() < 3) return false;
+  const Eigen::Vector3d np = p.plane.head<3>(), nq = q.plane.head<3>();
+  const Eigen::Vector3d u = np.cross(nq);
+  if (u.norm() < std::sin(o.virtual_min_angle_deg * kDeg)) return false;
+  // A point on both planes (n . X = -d for each).
+  const Eigen::Vector3d x0 =
+      (-p.plane[3] * nq.cross(u) - q.plane[3] * u.cross(np)) / u.squaredNorm();
+  const Eigen::Vector2d dir = u.head<2>();
+  if (dir.norm() < 0.1 * u.norm()) return false;  // a nearly vertical intersection
+  const Eigen::Vector2d d = dir.normalized(), x = x0.head<2>();
+  // The plan line a x + b y + c = 0 through x along d.
+  const double a = -d.y(), b = d.x(), c = -(a * x.x() + b * x.y());
+  const auto [p_neg, p_pos] = SideAreas(p.patch, a, b, c);
+  const auto [q_neg, q_pos] = SideAreas(q.patch, a, b, c);
+  const double pa = p_neg + p_pos, qa = q_neg + q_pos;
+  if (pa <= 0 || qa <= 0) return false;
+  const bool p_on_neg = p_neg >= p_pos, q_on_neg = q_neg >= q_pos;
+  if (p_on_neg == q_on_neg) return false;  // both on one side: no border between them
+  if (std::min(p_neg, p_pos) > o.virtual_max_across * pa ||
+      std::min(q_neg, q_pos) > o.virtual_max_across * qa)
+    return false;
+  const auto [a0, a1] = LineInterval(GrowConvex(p.patch, o.max_gap_m), x, d);
+  const auto [b0, b1] = LineInterval(GrowConvex(q.patch, o.max_gap_m), x, d);
+  const double plan_length = std::min(a1, b1) - std::max(a0, b0);
+  // Plan length to 3D length along the (possibly inclined) intersection.
+  return plan_length * u.norm() / dir.norm() >= o.virtual_min_length_m;
+}
 
 std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& h,
                                             double min_extent_m) {
@@ -145,14 +208,31 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   return rejected;
 }
 
-std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes, int min_lines) {
+std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
+                                             const GroupingOptions& o) {
+  const int n = static_cast<int>(planes->size());
+  std::vector<int> support(n);
+  for (int i = 0; i < n; ++i) support[i] = static_cast<int>((*planes)[i].lines.size());
+  // Virtual lines are looked for among all the planes before any is
+  // dropped, as in the paper's cooperating grouping; one per plane counts.
+  if (o.virtual_lines) {
+    std::vector<char> has_virtual(n, 0);
+    for (int i = 0; i < n; ++i) {
+      if (support[i] >= o.min_lines || support[i] + 1 < o.min_lines) continue;
+      for (int j = 0; j < n && !has_virtual[i]; ++j)
+        if (j != i && VirtualLine((*planes)[i], (*planes)[j], o)) has_virtual[i] = 1;
+    }
+    for (int i = 0; i < n; ++i) support[i] += has_virtual[i];
+  }
   std::vector<std::string> reasons;
   std::vector<PlaneGroup> kept;
-  for (PlaneGroup& g : *planes) {
-    if (static_cast<int>(g.lines.size()) < min_lines) {
+  for (int i = 0; i < n; ++i) {
+    PlaneGroup& g = (*planes)[i];
+    if (support[i] < o.min_lines) {
       char buf[160];
-      std::snprintf(buf, sizeof buf, "plane of line %d: %zu supporting line(s) < %d",
-                    g.lines.empty() ? -1 : g.lines[0], g.lines.size(), min_lines);
+      std::snprintf(buf, sizeof buf, "plane of line %d: %zu supporting line(s) < %d%s",
+                    g.lines.empty() ? -1 : g.lines[0], g.lines.size(), o.min_lines,
+                    o.virtual_lines ? ", no virtual line with a neighbouring plane" : "");
       reasons.push_back(buf);
       continue;
     }

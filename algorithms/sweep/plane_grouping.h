@@ -32,6 +32,17 @@ struct GroupingOptions {
   // (tree crowns, shadows). Applied by DropWeaklySupported after the
   // coplanar lines have joined.
   int min_lines = 2;
+  // The virtual line: where a plane meets another plane's patch along its
+  // own border, their intersection counts as one line of it (a gable face
+  // whose eave and verges were not matched still borders the other face at
+  // the ridge). It must run at least virtual_min_length_m within both
+  // patches grown by max_gap_m, with the two patches on opposite sides of it
+  // (no more than virtual_max_across of either patch's area across), and
+  // the planes must differ by at least virtual_min_angle_deg.
+  bool virtual_lines = true;
+  double virtual_min_length_m = 2.0;
+  double virtual_max_across = 0.2;
+  double virtual_min_angle_deg = 10.0;
 };
 
 // A plane with the half-planes and lines that support it.
@@ -66,9 +77,14 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           double max_overlap);
 
-// Removes the planes with fewer than min_lines distinct lines; returns one
-// reason per removed plane.
-std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes, int min_lines);
+// True when p and q meet along a virtual line (see GroupingOptions).
+bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& options);
+
+// Removes the planes with fewer than min_lines distinct lines, a virtual
+// line with another of the planes counting as one (see GroupingOptions);
+// returns one reason per removed plane.
+std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
+                                             const GroupingOptions& options);
 
 // The groups as the building assembly takes them.
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups);

@@ -124,12 +124,72 @@ TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
 namespace roofsweep {
 namespace {
 
+// A one-line plane from its patch (plan rectangle) on z = z0 + sx x + sy y.
+PlaneGroup OneLinePlane(int line, double x0, double y0, double x1, double y1, double z0, double sx,
+                        double sy) {
+  PlaneGroup g;
+  Eigen::Vector3d n(-sx, -sy, 1);
+  n.normalize();
+  g.plane << n, -n.z() * z0;
+  g.patch = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  g.lines = {line};
+  return g;
+}
+
+// §5: "at least two lines (one of them can be virtual)". Both faces of a
+// gable with only their eaves matched meet at the ridge: each has a
+// virtual line. A lone one-line plane, one whose neighbour lies on its own
+// side of the intersection, and one too far from its neighbour have none.
+TEST(PlaneGrouping, AVirtualLineWithANeighbourCountsAsASecondLine) {
+  const double t = std::tan(35 * M_PI / 180);
+  GroupingOptions o;
+  {
+    // Ridge along x at y = 4, z = 10; faces fall to y = 0 and y = 8.
+    std::vector<PlaneGroup> planes = {OneLinePlane(1, 0, 0.2, 10, 3.8, 10 - 4 * t, 0, t),
+                                      OneLinePlane(2, 0, 4.2, 10, 7.8, 10 + 4 * t, 0, -t)};
+    EXPECT_TRUE(VirtualLine(planes[0], planes[1], o));
+    const auto reasons = DropWeaklySupported(&planes, o);
+    EXPECT_EQ(planes.size(), 2u);
+    EXPECT_TRUE(reasons.empty());
+    o.virtual_lines = false;
+    EXPECT_EQ(DropWeaklySupported(&planes, o).size(), 2u);
+    EXPECT_TRUE(planes.empty());
+    o.virtual_lines = true;
+  }
+  {
+    // The same faces 3 m apart (beyond max_gap_m of the intersection).
+    std::vector<PlaneGroup> planes = {OneLinePlane(1, 0, -2.8, 10, 0.8, 10 - 4 * t, 0, t),
+                                      OneLinePlane(2, 0, 7.2, 10, 10.8, 10 + 4 * t, 0, -t)};
+    EXPECT_FALSE(VirtualLine(planes[0], planes[1], o));
+  }
+  {
+    // Two planes over one patch (a plane and a wrong one crossing it).
+    const PlaneGroup a = OneLinePlane(1, 0, 0, 10, 4, 8, 0, 0);
+    const PlaneGroup b = OneLinePlane(2, 0, 0, 10, 4, 6, 0, t);
+    EXPECT_FALSE(VirtualLine(a, b, o));
+  }
+  {
+    // A lone plane.
+    std::vector<PlaneGroup> planes = {OneLinePlane(1, 0, 0, 10, 4, 8, 0, t)};
+    EXPECT_EQ(DropWeaklySupported(&planes, o).size(), 1u);
+  }
+  {
+    // Nearly coplanar neighbours (5 degrees apart) make no virtual line.
+    const double t5 = std::tan(5 * M_PI / 180);
+    const PlaneGroup a = OneLinePlane(1, 0, 0, 10, 4, 8, 0, 0);
+    const PlaneGroup b = OneLinePlane(2, 0, 4.2, 10, 8, 8 - 4 * t5, 0, t5);
+    EXPECT_FALSE(VirtualLine(a, b, o));
+  }
+}
+
 TEST(PlaneGrouping, PlanesNeedTwoLines) {
   std::vector<PlaneGroup> planes(3);
   planes[0].lines = {4};
   planes[1].lines = {1, 2};
   planes[2].lines = {};
-  const std::vector<std::string> reasons = DropWeaklySupported(&planes, 2);
+  GroupingOptions o;
+  o.min_lines = 2;
+  const std::vector<std::string> reasons = DropWeaklySupported(&planes, o);
   ASSERT_EQ(planes.size(), 1u);
   EXPECT_EQ(planes[0].lines, (std::vector<int>{1, 2}));
   ASSERT_EQ(reasons.size(), 2u);

@@ -68,7 +68,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",
               "steepest roof plane (default 70)")
       .Option("-min_lines", &r.grouping.min_lines, "N",
-              "a roof plane needs N supporting 3D lines (default 2, as in the paper)")
+              "a roof plane needs N supporting 3D lines, one of them may be virtual: its "
+              "intersection with a neighbouring plane (default 2, as in the paper)")
       .Flag("-sweep_planes_only", &sweep_only,
             "planes from the sweep only, not also from pairs of coplanar lines");
   bool init_best = false;

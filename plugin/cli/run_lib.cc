@@ -274,8 +274,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
   }
   attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar);
-  const std::vector<std::string> one_line =
-      DropWeaklySupported(&grouped.planes, r.grouping.min_lines);
+  const std::vector<std::string> one_line = DropWeaklySupported(&grouped.planes, r.grouping);
   out.rejected.insert(out.rejected.end(), one_line.begin(), one_line.end());
   out.planes = static_cast<int>(grouped.planes.size());
   out.stages.push_back(
