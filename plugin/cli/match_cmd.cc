@@ -34,6 +34,9 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
             "slower)")
       .Option("-chromatic_factor", &r.match.threshold_factor, "F",
               "chromatic thresholds = F x median statistic of the best candidates (default 8)")
+      .Option("-min_epipolar_angle", &r.match.min_epipolar_angle, "DEG",
+              "a segment meeting a pair's epipolar lines at less than DEG is matched in other "
+              "pairs only (default 20; the paper: 40)")
       .Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
       .Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");

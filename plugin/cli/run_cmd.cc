@@ -16,6 +16,9 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, bool* init_best_out) {
             "slower)")
       .Option("-chromatic_factor", &r.match.threshold_factor, "F",
               "chromatic thresholds = F x median statistic (default 8)")
+      .Option("-min_epipolar_angle", &r.match.min_epipolar_angle, "DEG",
+              "a segment meeting a pair's epipolar lines at less than DEG is matched in other "
+              "pairs only (default 20; the paper: 40)")
       .Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
       .Option("-theta_max", &r.sweep.theta_max_deg, "DEG", "swept angle range end (default 75)")
       .Option("-min_similarity", &r.sweep.min_similarity, "S",
