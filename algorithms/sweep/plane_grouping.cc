@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/polygon2.h"
 #include "algorithms/sweep/half_plane_family.h"
 #include "algorithms/sweep/plane_fit.h"
 
@@ -216,11 +217,19 @@ std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
   // Virtual lines are looked for among all the planes before any is
   // dropped, as in the paper's cooperating grouping; one per plane counts.
   if (o.virtual_lines) {
+    // Patch boxes grown by the gap first: a city tile holds thousands of
+    // planes, and only neighbours can share a virtual line.
+    std::vector<Eigen::Vector4d> box(n);
+    for (int i = 0; i < n; ++i) {
+      box[i] = RingBounds((*planes)[i].patch);
+      box[i] += Eigen::Vector4d(-o.max_gap_m, -o.max_gap_m, o.max_gap_m, o.max_gap_m);
+    }
     std::vector<char> has_virtual(n, 0);
     for (int i = 0; i < n; ++i) {
       if (support[i] >= o.min_lines || support[i] + 1 < o.min_lines) continue;
       for (int j = 0; j < n && !has_virtual[i]; ++j)
-        if (j != i && VirtualLine((*planes)[i], (*planes)[j], o)) has_virtual[i] = 1;
+        if (j != i && BoundsMeet(box[i], box[j]) && VirtualLine((*planes)[i], (*planes)[j], o))
+          has_virtual[i] = 1;
     }
     for (int i = 0; i < n; ++i) support[i] += has_virtual[i];
   }
