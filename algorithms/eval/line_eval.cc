@@ -1,6 +1,7 @@
 #include "algorithms/eval/line_eval.h"
 
 #include <cmath>
+#include <string>
 #include <unordered_map>
 
 #include "algorithms/core/error.h"
@@ -8,33 +9,57 @@
 namespace roofsweep::eval {
 namespace {
 
-// Buckets segments by the xy cells their (tolerance-grown) bounding boxes
-// touch, so a sample point only meets the few segments near it. A hand-made
-// grid because the query is "all segments within d of a point" in 3D, which
-// OpenCV/Eigen do not offer, and CGAL's AABB tree would put CGAL compile
-// costs into this file for no gain at these sizes.
+// Buckets ids by the xy cells their (tolerance-grown) bounding boxes touch,
+// so a sample point only meets the few segments or polygons near it. A
+// hand-made grid because the query is "all within d of a point" in 3D,
+// which OpenCV/Eigen do not offer, and CGAL's AABB tree would put CGAL
+// compile costs into this file for no gain at these sizes.
+class CellBuckets {
+ public:
+  explicit CellBuckets(double cell) : cell_(cell) {}
+
+  void Add(int id, Eigen::Vector2d lo, Eigen::Vector2d hi, double margin, const char* what) {
+    const long long x0 = Cell(lo.x() - margin), x1 = Cell(hi.x() + margin);
+    const long long y0 = Cell(lo.y() - margin), y1 = Cell(hi.y() + margin);
+    if ((x1 - x0 + 1) * (y1 - y0 + 1) > 1000000)
+      throw Error(std::string("3D line evaluation: a ") + what +
+                  " spans more than 10^6 grid cells");
+    for (long long x = x0; x <= x1; ++x)
+      for (long long y = y0; y <= y1; ++y) cells_[Key(x, y)].push_back(id);
+  }
+
+  // The ids whose boxes touch p's cell (hash collisions only add
+  // candidates; the caller's distance test decides); null when none.
+  const std::vector<int>* At(const Eigen::Vector3d& p) const {
+    const auto it = cells_.find(Key(Cell(p.x()), Cell(p.y())));
+    return it == cells_.end() ? nullptr : &it->second;
+  }
+
+ private:
+  long long Cell(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+  static long long Key(long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; }
+
+  double cell_;
+  std::unordered_map<long long, std::vector<int>> cells_;
+};
+
 class SegmentGrid {
  public:
   SegmentGrid(const std::vector<const Segment3*>& segments, double margin, double cell)
-      : segments_(segments), cell_(cell) {
+      : segments_(segments), buckets_(cell) {
     for (int i = 0; i < static_cast<int>(segments.size()); ++i) {
       const Segment3& s = *segments[i];
-      const Eigen::Vector2d lo = s.a.head<2>().cwiseMin(s.b.head<2>()).array() - margin;
-      const Eigen::Vector2d hi = s.a.head<2>().cwiseMax(s.b.head<2>()).array() + margin;
-      const long long x0 = Cell(lo.x()), x1 = Cell(hi.x()), y0 = Cell(lo.y()), y1 = Cell(hi.y());
-      if ((x1 - x0 + 1) * (y1 - y0 + 1) > 1000000)
-        throw Error("3D line evaluation: a segment spans more than 10^6 grid cells");
-      for (long long x = x0; x <= x1; ++x)
-        for (long long y = y0; y <= y1; ++y) cells_[Key(x, y)].push_back(i);
+      buckets_.Add(i, s.a.head<2>().cwiseMin(s.b.head<2>()), s.a.head<2>().cwiseMax(s.b.head<2>()),
+                   margin, "segment");
     }
   }
 
   // True when a segment within `dist` of p has a direction within the angle.
   bool Near(const Eigen::Vector3d& p, const Eigen::Vector3d& dir, double dist,
             double cos_angle) const {
-    const auto it = cells_.find(Key(Cell(p.x()), Cell(p.y())));
-    if (it == cells_.end()) return false;
-    for (int i : it->second) {
+    const std::vector<int>* ids = buckets_.At(p);
+    if (!ids) return false;
+    for (int i : *ids) {
       const Segment3& s = *segments_[i];
       if (std::abs(s.Direction().dot(dir)) < cos_angle) continue;
       if (s.Distance(p) <= dist) return true;
@@ -43,21 +68,16 @@ class SegmentGrid {
   }
 
  private:
-  long long Cell(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
-  static long long Key(long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; }
-
   std::vector<const Segment3*> segments_;
-  double cell_;
-  // Hash collisions only add candidates; the distance test decides.
-  std::unordered_map<long long, std::vector<int>> cells_;
+  CellBuckets buckets_;
 };
 
-// Reference polygons bucketed like SegmentGrid, for "is p within d of a
-// surface": plane distance, then the even-odd test in the plane's
-// projection onto the axis plane it is least inclined to.
+// Reference polygons, for "is p within d of a surface": plane distance, then
+// the even-odd test in the plane's projection onto the axis plane it is
+// least inclined to.
 class PolygonGrid {
  public:
-  PolygonGrid(const std::vector<Polygon3>& polygons, double margin, double cell) : cell_(cell) {
+  PolygonGrid(const std::vector<Polygon3>& polygons, double margin, double cell) : buckets_(cell) {
     for (const Polygon3& p : polygons) {
       if (p.exterior.size() < 3) continue;
       Entry e;
@@ -80,21 +100,15 @@ class PolygonGrid {
         lo = lo.cwiseMin(q.head<2>());
         hi = hi.cwiseMax(q.head<2>());
       }
-      const int id = static_cast<int>(entries_.size());
+      buckets_.Add(static_cast<int>(entries_.size()), lo, hi, margin, "surface");
       entries_.push_back(std::move(e));
-      const long long x0 = Cell(lo.x() - margin), x1 = Cell(hi.x() + margin);
-      const long long y0 = Cell(lo.y() - margin), y1 = Cell(hi.y() + margin);
-      if ((x1 - x0 + 1) * (y1 - y0 + 1) > 1000000)
-        throw Error("3D line evaluation: a surface spans more than 10^6 grid cells");
-      for (long long x = x0; x <= x1; ++x)
-        for (long long y = y0; y <= y1; ++y) cells_[Key(x, y)].push_back(id);
     }
   }
 
   bool Near(const Eigen::Vector3d& p, double dist) const {
-    const auto it = cells_.find(Key(Cell(p.x()), Cell(p.y())));
-    if (it == cells_.end()) return false;
-    for (int i : it->second) {
+    const std::vector<int>* ids = buckets_.At(p);
+    if (!ids) return false;
+    for (int i : *ids) {
       const Entry& e = entries_[i];
       if (std::abs(e.n.dot(p) + e.d) > dist) continue;
       const Eigen::Vector2d q(p[e.u], p[e.v]);
@@ -118,25 +132,31 @@ class PolygonGrid {
     int u = 0, v = 1;
     std::vector<std::vector<Eigen::Vector2d>> rings;
   };
-  long long Cell(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
-  static long long Key(long long x, long long y) { return x * 73856093LL ^ y * 19349663LL; }
-
   std::vector<Entry> entries_;
-  double cell_;
-  std::unordered_map<long long, std::vector<int>> cells_;
+  CellBuckets buckets_;
 };
+
+// Calls f(point, direction) at the centres of the n equal pieces of s, at
+// most step apart; returns n (0 for a zero-length segment).
+template <typename F>
+int ForEachSample(const Segment3& s, double step, F f) {
+  const double len = s.Length();
+  if (len <= 0) return 0;
+  const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+  const Eigen::Vector3d dir = s.Direction();
+  for (int k = 0; k < n; ++k) f(s.At((k + 0.5) / n), dir);
+  return n;
+}
 
 // Length of `s` whose sample points satisfy `grid.Near`.
 double CoveredLength(const Segment3& s, const SegmentGrid& grid, const LineEvalOptions& o,
                      double cos_angle) {
-  const double len = s.Length();
-  if (len <= 0) return 0;
-  const int n = std::max(1, static_cast<int>(std::ceil(len / o.sample_step_m)));
-  const Eigen::Vector3d dir = s.Direction();
   int hits = 0;
-  for (int k = 0; k < n; ++k)
-    if (grid.Near(s.At((k + 0.5) / n), dir, o.distance_m, cos_angle)) ++hits;
-  return len * hits / n;
+  const int n =
+      ForEachSample(s, o.sample_step_m, [&](const Eigen::Vector3d& p, const Eigen::Vector3d& dir) {
+        if (grid.Near(p, dir, o.distance_m, cos_angle)) ++hits;
+      });
+  return n > 0 ? s.Length() * hits / n : 0.0;
 }
 
 }  // namespace
@@ -212,19 +232,18 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
   for (const auto& l : result) {
     const double len = l.Length();
     s.result_length_m += len;
-    if (len <= 0) continue;
-    const int n = std::max(1, static_cast<int>(std::ceil(len / options.sample_step_m)));
-    const Eigen::Vector3d dir = l.Direction();
     int on_edge = 0, on_surface = 0;
-    for (int k = 0; k < n; ++k) {
-      const Eigen::Vector3d p = l.At((k + 0.5) / n);
-      if (ref_grid.Near(p, dir, options.distance_m, cos_angle)) {
-        ++on_edge;
-      } else if (with_surfaces && (std::abs(p.z() - options.ground_height) <= options.distance_m ||
-                                   surface_grid.Near(p, options.distance_m))) {
-        ++on_surface;
-      }
-    }
+    const int n = ForEachSample(
+        l, options.sample_step_m, [&](const Eigen::Vector3d& p, const Eigen::Vector3d& dir) {
+          if (ref_grid.Near(p, dir, options.distance_m, cos_angle)) {
+            ++on_edge;
+          } else if (with_surfaces &&
+                     (std::abs(p.z() - options.ground_height) <= options.distance_m ||
+                      surface_grid.Near(p, options.distance_m))) {
+            ++on_surface;
+          }
+        });
+    if (n == 0) continue;
     s.result_on_reference_m += len * on_edge / n;
     s.result_on_surface_m += len * on_surface / n;
   }

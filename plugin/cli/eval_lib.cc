@@ -11,6 +11,7 @@
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/output_file.h"
 #include "io/citymodel/segments_json.h"
+#include "io/core/block_manifest.h"
 #include "io/core/image_io.h"
 
 namespace fs = std::filesystem;
@@ -50,11 +51,8 @@ EvalReport RunEval(const EvalRequest& r) {
     // it lie on a true surface.
     const fs::path block_json = fs::path(r.truth) / "block.json";
     if (fs::exists(block_json) && !std::isfinite(options.lines.ground_height)) {
-      std::ifstream f(block_json);
-      const auto j = nlohmann::json::parse(f, nullptr, false);
-      if (j.is_object() && j.contains("ground") && j["ground"].is_object() &&
-          j["ground"].contains("height") && j["ground"]["height"].is_number())
-        options.lines.ground_height = j["ground"]["height"].get<double>();
+      const BlockManifest manifest = ReadManifest(block_json.string());
+      if (manifest.ground_height) options.lines.ground_height = *manifest.ground_height;
     }
     const fs::path meta = fs::path(r.truth) / "simulation.json";
     if (options.gsd_m <= 0 && fs::exists(meta)) {
