@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -306,7 +307,10 @@ Envelope LowerEnvelope(const std::vector<RoofPlaneHypothesis>& planes,
     double value = std::numeric_limits<double>::infinity();
     std::string why;
     if (area < o.min_face_area_m2) {
-      value = area;
+      // After the unsupported faces: a plane above the roof everywhere is
+      // often a true plane that a wrongly extended one hides, and dropping
+      // it first would lose it for good.
+      value = 1 + area;
       why = StrFormat(": roof face of %.2f m2 < %.2f m2 (%s)", area, o.min_face_area_m2,
                       area == 0 ? "above the roof everywhere" : "sliver");
     } else if (support < min_support) {
@@ -415,6 +419,35 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
   return b;
 }
 
+// Connected pieces of `active` (ascending plane indices) under `links`,
+// each ascending, ordered by their smallest index.
+std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
+                                              const std::vector<std::vector<int>>& links) {
+  std::map<int, int> piece_of;  // plane -> piece, -1 unvisited
+  for (int i : active) piece_of[i] = -1;
+  std::vector<std::vector<int>> pieces;
+  for (int start : active) {
+    if (piece_of[start] >= 0) continue;
+    const int id = static_cast<int>(pieces.size());
+    pieces.emplace_back();
+    std::vector<int> stack{start};
+    piece_of[start] = id;
+    while (!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      pieces[id].push_back(i);
+      for (int j : links[i]) {
+        auto it = piece_of.find(j);
+        if (it == piece_of.end() || it->second >= 0) continue;
+        it->second = id;
+        stack.push_back(j);
+      }
+    }
+    std::sort(pieces[id].begin(), pieces[id].end());
+  }
+  return pieces;
+}
+
 }  // namespace
 
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
@@ -448,7 +481,11 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
 
   // 2. Buildings: patches that touch and whose planes meet there, over
   // the same footprint.
-  UnionFind uf(n), parts(n);
+  UnionFind uf(n);
+  // Convex parts as links rather than a union-find: when a plane is
+  // dropped below, what it held together may fall apart into separate
+  // buildings.
+  std::vector<std::vector<int>> part_links(n);
   std::vector<Ring2> grown(n);
   for (int i = 0; i < n; ++i) grown[i] = GrowConvex(planes[i].patch, o.adjacency_gap_m);
   for (int i = 0; i < n; ++i)
@@ -469,10 +506,18 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       const bool convex =
           PlaneZ(planes[i].plane, ci) <= PlaneZ(planes[j].plane, ci) + o.max_step_m &&
           PlaneZ(planes[j].plane, cj) <= PlaneZ(planes[i].plane, cj) + o.max_step_m;
-      if (convex || !o.split_at_valleys) parts.Join(i, j);
+      if (convex || !o.split_at_valleys) {
+        part_links[i].push_back(j);
+        part_links[j].push_back(i);
+      }
     }
-  std::map<int, std::vector<int>> groups;
-  for (int i = 0; i < n; ++i) groups[parts.Find(i)].push_back(i);
+  // Building hypotheses as a queue: a hypothesis that falls apart when a
+  // plane is dropped goes on as one hypothesis per connected piece.
+  std::vector<int> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  std::deque<std::pair<int, std::vector<int>>> groups;
+  for (std::vector<int>& piece : ConnectedPieces(all, part_links))
+    groups.emplace_back(piece.front(), std::move(piece));
   res.hypotheses = static_cast<int>(groups.size());
   std::vector<int> built_over(footprints.size(), 0);
   std::vector<std::vector<int>> planes_over(footprints.size());
@@ -482,7 +527,10 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   std::vector<int> whole(footprints.size(), 0);
 
   int building_no = 0;
-  for (auto& [root, members] : groups) {
+  while (!groups.empty()) {
+    const int root = groups.front().first;
+    const std::vector<int> members = std::move(groups.front().second);
+    groups.pop_front();
     ++building_no;
     const std::string bname = StrFormat("building hypothesis %d", building_no);
     const int f = footprint_of[root];
@@ -544,6 +592,14 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       res.rejected.push_back(name(active[e.worst]) + e.worst_reason);
       active.erase(active.begin() + e.worst);
       if (active.empty()) break;
+      // One envelope over the hull of pieces that no longer touch would
+      // roof the gap between them and let one house's planes cut the other.
+      std::vector<std::vector<int>> pieces = ConnectedPieces(active, part_links);
+      for (size_t k = 1; k < pieces.size(); ++k) {
+        groups.emplace_back(root, std::move(pieces[k]));
+        ++res.hypotheses;
+      }
+      active = std::move(pieces[0]);
     }
     if (!env) {
       res.rejected.push_back(bname + ": no roof plane left");

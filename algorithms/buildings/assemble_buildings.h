@@ -101,7 +101,10 @@ struct AssemblyResult {
 // roof is the lower envelope of the group's planes over the outline (exact
 // for the convex roof shapes: flat, shed, gable, hip, half-hip, pyramid,
 // mansard — concave roofs with valleys are not represented, a known
-// limitation); walls run from every outline edge down to the ground
+// limitation). A plane whose face the images did not see is dropped and
+// the envelope recomputed, unsupported faces before hidden ones; a
+// hypothesis that falls apart when a plane is dropped goes on as one per
+// connected piece. Walls run from every outline edge down to the ground
 // (GroundModel at the outline, the lowest value for the whole building so
 // the ground surface is planar); the solid is closed and outward oriented
 // by construction and checked with CheckBuildingSolid. Roof type from the

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
@@ -152,6 +153,55 @@ TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {
   EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
   ASSERT_EQ(r.rejected.size(), 1u);
   EXPECT_NE(r.rejected[0].find("plane 2"), std::string::npos) << r.rejected[0];
+  ExpectAllValid(r);
+}
+
+TEST(AssembleBuildings, AHypothesisThatFallsApartIsBuiltPieceByPiece) {
+  // Two flat garages 7 m apart, 0.3 m different in height, joined only
+  // through a false plane over the gap between them (a hedge). Once that
+  // plane is dropped, one envelope over both would let the lower roof
+  // cover the higher garage and the gap.
+  std::vector<RoofPlaneHypothesis> in = {
+      Hyp(Eigen::Vector4d(0, 0, 1, -3.0), {{0, 0}, {6, 0}, {6, 8}, {0, 8}}, 2),
+      Hyp(Eigen::Vector4d(0, 0, 1, -3.3), {{13, 0}, {19, 0}, {19, 8}, {13, 8}}, 2),
+      Hyp(Eigen::Vector4d(0, 0, 1, -3.15), {{6.5, 3}, {12.5, 3}, {12.5, 5}, {6.5, 5}}, 0.5)};
+  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  ASSERT_EQ(r.rejected.size(), 1u);
+  EXPECT_NE(r.rejected[0].find("plane 2"), std::string::npos) << r.rejected[0];
+  std::vector<double> heights;
+  for (const Building& b : r.model.buildings) {
+    heights.push_back(b.measured_height);
+    EXPECT_NEAR(b.double_attributes.at("footprint_m2"), 48, 1e-6) << b.id;
+  }
+  std::sort(heights.begin(), heights.end());
+  EXPECT_NEAR(heights[0], 3.0, 1e-9);
+  EXPECT_NEAR(heights[1], 3.3, 1e-9);
+  ExpectAllValid(r);
+}
+
+TEST(AssembleBuildings, AFaceHiddenByAnUnsupportedPlaneOutlivesIt) {
+  // A terrace: a 5 m house and a 20 m row joined at a party wall, the
+  // row's roof 0.3 m higher. Over the hull of both, the house's planes lie
+  // below the row's everywhere, yet are seen over less than a third of it:
+  // they go first, and the row keeps its faces instead of losing them for
+  // being hidden (which would then leave no roof at all).
+  std::vector<RoofPlaneHypothesis> in;
+  const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
+  for (double az : {-90.0, 90.0}) {
+    const double y0 = az < 0 ? 0 : 4, y1 = az < 0 ? 4 : 8;
+    in.push_back(Hyp(SlopedPlane({0, 4, ridge_z}, 30, az), {{0, y0}, {5, y0}, {5, y1}, {0, y1}}));
+    in.push_back(Hyp(SlopedPlane({5.5, 4, ridge_z + 0.3}, 30, az),
+                     {{5.5, y0}, {25, y0}, {25, y1}, {5.5, y1}}));
+  }
+  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  const Building& b = r.model.buildings[0];
+  EXPECT_EQ(b.roof_type, roof_type::kGabled);
+  EXPECT_NEAR(b.measured_height, ridge_z + 0.3, 1e-9);
+  ASSERT_EQ(r.rejected.size(), 2u);
+  for (const std::string& why : r.rejected)
+    EXPECT_NE(why.find("where the images saw the plane"), std::string::npos) << why;
   ExpectAllValid(r);
 }
 
