@@ -59,6 +59,11 @@ std::string FormatTable(const EvalResult& r) {
   t.Row("completeness", Pct(p.completeness), Of(p.tp_reference, p.n_reference) + " reference");
   t.Row("correctness", Pct(p.correctness), Of(p.tp_result, p.n_result) + " result");
   t.Row("quality", Pct(p.quality));
+  const std::string large = " >= " + Fmt(r.options.large_plane_m2, "%.0f m2");
+  t.Row("completeness" + large, Pct(p.completeness_large),
+        Of(p.tp_reference_large, p.n_reference_large) + " reference");
+  t.Row("correctness" + large, Pct(p.correctness_large),
+        Of(p.tp_result_large, p.n_result_large) + " result");
   t.Row("over-segmented (1:M)", std::to_string(p.n_1_to_m), "reference planes");
   t.Row("under-segmented (N:1)", std::to_string(p.n_n_to_1), "result planes");
   t.Row("N:M clusters", std::to_string(p.n_n_to_m));
@@ -125,7 +130,13 @@ nlohmann::json ToJson(const EvalResult& r) {
                       {"tp_result", p.tp_result},
                       {"n_1_to_m", p.n_1_to_m},
                       {"n_n_to_1", p.n_n_to_1},
-                      {"n_n_to_m", p.n_n_to_m}};
+                      {"n_n_to_m", p.n_n_to_m},
+                      {"completeness_large", Num(p.completeness_large)},
+                      {"correctness_large", Num(p.correctness_large)},
+                      {"n_reference_large", p.n_reference_large},
+                      {"n_result_large", p.n_result_large},
+                      {"tp_reference_large", p.tp_reference_large},
+                      {"tp_result_large", p.tp_result_large}};
   j["geometry"] = {{"matched_pairs", g.matched_pairs},
                    {"angle_median_deg", Num(g.angle_median_deg)},
                    {"angle_rms_deg", Num(g.angle_rms_deg)},
@@ -171,6 +182,7 @@ nlohmann::json ToJson(const EvalResult& r) {
                   {"gsd_m", o.gsd_m},
                   {"rmsz_grid_m", o.rmsz_grid_m},
                   {"building_overlap_fraction", o.building_overlap_fraction},
+                  {"large_plane_m2", o.large_plane_m2},
                   {"line_distance_m", o.lines.distance_m},
                   {"line_angle_deg", o.lines.angle_deg}};
   return j;

@@ -13,6 +13,7 @@ TEST(EvalReport, JsonHasTheAgreedKeysAndNullForUndefined) {
   const nlohmann::json j = ToJson(Evaluate(m, m, {}, &lines));
   for (const char* k :
        {"/roof_planes/completeness", "/roof_planes/correctness", "/roof_planes/quality",
+        "/roof_planes/completeness_large", "/roof_planes/correctness_large",
         "/geometry/angle_median_deg", "/geometry/angle_rms_deg", "/geometry/vertex_rms_m",
         "/geometry/rmsz_m", "/buildings/completeness", "/buildings/correctness",
         "/lines3d/precision", "/lines3d/completeness", "/lines3d/roof_edge_completeness"}) {

@@ -152,6 +152,8 @@ void CheckOptions(const EvalOptions& o) {
     throw Error("evaluation option max_normal_angle_deg must be in [0, 90]");
   if (!(o.rmsz_grid_m > 0)) throw Error("evaluation option rmsz_grid_m must be positive");
   if (!(o.gsd_m >= 0)) throw Error("evaluation option gsd_m must be >= 0");
+  if (!(o.large_plane_m2 >= 0) || !std::isfinite(o.large_plane_m2))
+    throw Error("evaluation option large_plane_m2 must be >= 0");
   if (!(o.vertex_max_distance_m > 0))
     throw Error("evaluation option vertex_max_distance_m must be positive");
   if (!(o.planes.vertical_roof_deg > 0 && o.planes.vertical_roof_deg <= 90))
@@ -349,6 +351,18 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
   ScoreSegmentation(rr, rt, overlaps, options.segmentation_overlap_fraction, &s);
   out.result_planes = Records(res, result, mr, rt);
   out.reference_planes = Records(ref, truth, mt, rr);
+  for (const PlaneRecord& p : out.reference_planes)
+    if (p.plan_area >= options.large_plane_m2) {
+      ++s.n_reference_large;
+      s.tp_reference_large += p.true_positive;
+    }
+  for (const PlaneRecord& p : out.result_planes)
+    if (p.plan_area >= options.large_plane_m2) {
+      ++s.n_result_large;
+      s.tp_result_large += p.true_positive;
+    }
+  s.completeness_large = Ratio(s.tp_reference_large, s.n_reference_large);
+  s.correctness_large = Ratio(s.tp_result_large, s.n_result_large);
 
   ScoreGeometry(res, ref, mt, rr, rt, options, &out.geometry);
   ScoreHeights(result, truth, options, &out.geometry);

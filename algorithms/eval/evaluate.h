@@ -28,6 +28,8 @@
 //   completeness = TP_ref / N_ref, correctness = TP_rec / N_rec,
 //   quality = TP_ref / (TP_ref + FN + FP) with FN = N_ref - TP_ref and
 //   FP = N_rec - TP_rec (equals 1 / (1/compl + 1/corr - 1) when TP_ref = TP_rec).
+//   Also over the planes of at least large_plane_m2 alone (ISPRS Cm,10 and
+//   Cr,10), matched as before against all planes of the other model.
 // * Segmentation (topological clarification): a result and a reference plane
 //   are linked when their overlap is at least segmentation_overlap_fraction
 //   of the SMALLER plane's area (no normal test). n_1_to_m: reference planes
@@ -64,7 +66,11 @@ struct EvalOptions {
   double gsd_m = 0;                            // > 0: also report vertex RMS in GSD
   double rmsz_grid_m = 0.25;                   // RMSZ sampling grid
   double building_overlap_fraction = 0.5;      // footprints, of the building's own area
-  eval::LineEvalOptions lines;                 // 3D line tolerances (10 cm, 10°)
+  // Completeness and correctness are also given over the planes of at
+  // least this plan area (ISPRS benchmark: Cm,10 and Cr,10 over planes
+  // larger than 10 m², Rottensteiner et al. 2014); matching still uses all.
+  double large_plane_m2 = 10.0;
+  eval::LineEvalOptions lines;  // 3D line tolerances (10 cm, 10°)
 };
 
 struct PlaneRecord {
@@ -83,6 +89,11 @@ struct RoofPlaneScores {
   int tp_reference = 0, tp_result = 0;
   std::optional<double> completeness, correctness, quality;
   int n_1_to_m = 0, n_n_to_1 = 0, n_n_to_m = 0;
+  // The same over reference (completeness) and result (correctness)
+  // planes of at least EvalOptions::large_plane_m2.
+  int n_reference_large = 0, n_result_large = 0;
+  int tp_reference_large = 0, tp_result_large = 0;
+  std::optional<double> completeness_large, correctness_large;
 };
 
 struct GeometryScores {

@@ -185,6 +185,31 @@ TEST(Evaluate, OneMissingRoofPlane) {
   EXPECT_FALSE(r.reference_planes[2].true_positive);  // the gable's north plane
 }
 
+TEST(Evaluate, LargePlanesAreAlsoScoredAlone) {
+  // A 3 x 3 m shed missed and a 2 x 3 m false roof found count in the
+  // figures over all planes, not in those over planes of 10 m² or more.
+  CityModel truth = ThreeHouses(), result = ThreeHouses();
+  truth.buildings.push_back(eval_test::Box("B_shed", 120, 0, 3, 3, 30, 2.5));
+  result.buildings.push_back(eval_test::Box("B_false", 140, 0, 2, 3, 30, 4));
+  const EvalResult r = Evaluate(result, truth, {});
+  const RoofPlaneScores& p = r.roof_planes;
+  EXPECT_NEAR(*p.completeness, 7.0 / 8.0, 1e-12);
+  EXPECT_NEAR(*p.correctness, 7.0 / 8.0, 1e-12);
+  EXPECT_EQ(p.n_reference_large, 7);
+  EXPECT_EQ(p.n_result_large, 7);
+  EXPECT_DOUBLE_EQ(*p.completeness_large, 1);
+  EXPECT_DOUBLE_EQ(*p.correctness_large, 1);
+  EvalOptions o;
+  o.large_plane_m2 = 5;  // both small planes count again
+  const EvalResult r5 = Evaluate(result, truth, o);
+  EXPECT_NEAR(*r5.roof_planes.completeness_large, 7.0 / 8.0, 1e-12);
+  EXPECT_NEAR(*r5.roof_planes.correctness_large, 7.0 / 8.0, 1e-12);
+  o.large_plane_m2 = 1e6;  // no plane that large: undefined, not 0 or 1
+  const EvalResult none = Evaluate(result, truth, o);
+  EXPECT_FALSE(none.roof_planes.completeness_large.has_value());
+  EXPECT_FALSE(none.roof_planes.correctness_large.has_value());
+}
+
 TEST(Evaluate, WrongNormalsDoNotMatchButFootprintsDo) {
   CityModel flat, gable;
   flat.buildings.push_back(eval_test::Box("B", 0, 0, 12, 8, 0, 6));
@@ -261,6 +286,9 @@ TEST(Evaluate, BadOptionsThrow) {
   EXPECT_THROW(Evaluate(m, m, o), Error);
   o = {};
   o.rmsz_grid_m = -1;
+  EXPECT_THROW(Evaluate(m, m, o), Error);
+  o = {};
+  o.large_plane_m2 = std::nan("");
   EXPECT_THROW(Evaluate(m, m, o), Error);
 }
 

@@ -27,6 +27,8 @@ int Eval(const std::vector<std::string>& args, Context&) {
               "plan-view overlap for a roof plane to count (0.5)")
       .Option("-max_angle", &r.options.max_normal_angle_deg, "DEG",
               "normal-angle agreement for a roof plane to count (10)")
+      .Option("-large_plane", &r.options.large_plane_m2, "M2",
+              "also score planes of at least this plan area alone (10, as ISPRS)")
       .Option("-line_tolerance", &r.options.lines.distance_m, "M",
               "distance for a 3D line to count (0.10)")
       .Flag("-overwrite", &r.overwrite, "replace an existing -png file")
