@@ -8,6 +8,7 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
+#include "algorithms/core/format.h"
 #include "algorithms/sweep/half_plane_family.h"
 #include "algorithms/sweep/plane_fit.h"
 
@@ -209,6 +210,31 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   return rejected;
 }
 
+namespace {
+
+// For each plane flagged in `needs`: does it meet another of `planes` along
+// a virtual line? Patch boxes grown by the gap first: a city tile holds
+// thousands of planes, and only neighbours can share a virtual line.
+std::vector<char> HasVirtualLine(const std::vector<PlaneGroup>& planes,
+                                 const std::vector<char>& needs, const GroupingOptions& o) {
+  const int n = static_cast<int>(planes.size());
+  std::vector<Eigen::Vector4d> box(n);
+  for (int i = 0; i < n; ++i) {
+    box[i] = RingBounds(planes[i].patch);
+    box[i] += Eigen::Vector4d(-o.max_gap_m, -o.max_gap_m, o.max_gap_m, o.max_gap_m);
+  }
+  std::vector<char> found(n, 0);
+  for (int i = 0; i < n; ++i) {
+    if (!needs[i]) continue;
+    for (int j = 0; j < n && !found[i]; ++j)
+      if (j != i && BoundsMeet(box[i], box[j]) && VirtualLine(planes[i], planes[j], o))
+        found[i] = 1;
+  }
+  return found;
+}
+
+}  // namespace
+
 std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
                                              const GroupingOptions& o) {
   const int n = static_cast<int>(planes->size());
@@ -217,20 +243,10 @@ std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
   // Virtual lines are looked for among all the planes before any is
   // dropped, as in the paper's cooperating grouping; one per plane counts.
   if (o.virtual_lines) {
-    // Patch boxes grown by the gap first: a city tile holds thousands of
-    // planes, and only neighbours can share a virtual line.
-    std::vector<Eigen::Vector4d> box(n);
-    for (int i = 0; i < n; ++i) {
-      box[i] = RingBounds((*planes)[i].patch);
-      box[i] += Eigen::Vector4d(-o.max_gap_m, -o.max_gap_m, o.max_gap_m, o.max_gap_m);
-    }
-    std::vector<char> has_virtual(n, 0);
-    for (int i = 0; i < n; ++i) {
-      if (support[i] >= o.min_lines || support[i] + 1 < o.min_lines) continue;
-      for (int j = 0; j < n && !has_virtual[i]; ++j)
-        if (j != i && BoundsMeet(box[i], box[j]) && VirtualLine((*planes)[i], (*planes)[j], o))
-          has_virtual[i] = 1;
-    }
+    std::vector<char> needs(n);
+    for (int i = 0; i < n; ++i)
+      needs[i] = support[i] < o.min_lines && support[i] + 1 >= o.min_lines;
+    const std::vector<char> has_virtual = HasVirtualLine(*planes, needs, o);
     for (int i = 0; i < n; ++i) support[i] += has_virtual[i];
   }
   std::vector<std::string> reasons;
@@ -248,6 +264,41 @@ std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
     kept.push_back(std::move(g));
   }
   *planes = std::move(kept);
+  return reasons;
+}
+
+std::vector<std::string> DropOrphanedPlanes(std::vector<RoofPlaneHypothesis>* planes,
+                                            const GroupingOptions& o) {
+  std::vector<std::string> reasons;
+  if (!o.virtual_lines) return reasons;
+  // Until nothing changes: a plane dropped here may have been the partner
+  // of another.
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    const int n = static_cast<int>(planes->size());
+    std::vector<PlaneGroup> shapes(n);
+    std::vector<char> needs(n);
+    for (int i = 0; i < n; ++i) {
+      shapes[i].plane = (*planes)[i].plane;
+      shapes[i].patch = (*planes)[i].patch;
+      needs[i] = (*planes)[i].lines < o.min_lines;
+    }
+    const std::vector<char> has_virtual = HasVirtualLine(shapes, needs, o);
+    std::vector<RoofPlaneHypothesis> kept;
+    for (int i = 0; i < n; ++i) {
+      RoofPlaneHypothesis& h = (*planes)[i];
+      if (needs[i] && !has_virtual[i]) {
+        reasons.push_back(h.id +
+                          StrFormat(": %d supporting line(s) < %d, and no plane left that it "
+                                    "meets along a virtual line",
+                                    h.lines, o.min_lines));
+        dropped = true;
+        continue;
+      }
+      kept.push_back(std::move(h));
+    }
+    *planes = std::move(kept);
+  }
   return reasons;
 }
 

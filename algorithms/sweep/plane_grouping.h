@@ -86,6 +86,14 @@ bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions
 std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
                                              const GroupingOptions& options);
 
+// §4-§5 "updates propagated to neighbours and virtual lines": after the
+// verification and the conflicts, a plane kept for a virtual line (fewer
+// than min_lines real lines) whose partner has since been rejected is
+// removed, until no such plane is left; returns one reason per removed
+// plane. Planes with min_lines real lines are never touched.
+std::vector<std::string> DropOrphanedPlanes(std::vector<RoofPlaneHypothesis>* planes,
+                                            const GroupingOptions& options);
+
 // The groups as the building assembly takes them.
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups);
 

@@ -182,6 +182,35 @@ TEST(PlaneGrouping, AVirtualLineWithANeighbourCountsAsASecondLine) {
   }
 }
 
+TEST(PlaneGrouping, APlaneWhoseVirtualLinePartnerIsRejectedGoesToo) {
+  // The gable of the test above as roof planes: a one-line face and a
+  // three-line face meeting at the ridge, and a one-line plane 30 m away
+  // kept by a neighbour of its own (a two-line plane beside it).
+  const double t = std::tan(35 * M_PI / 180);
+  const GroupingOptions o;
+  std::vector<PlaneGroup> groups = {OneLinePlane(1, 0, 0.2, 10, 3.8, 10 - 4 * t, 0, t),
+                                    OneLinePlane(2, 0, 4.2, 10, 7.8, 10 + 4 * t, 0, -t),
+                                    OneLinePlane(3, 30, 0.2, 40, 3.8, 10 - 4 * t, 0, t),
+                                    OneLinePlane(4, 30, 4.2, 40, 7.8, 10 + 4 * t, 0, -t)};
+  groups[1].lines = {2, 5, 6};
+  groups[3].lines = {4, 7};
+  std::vector<RoofPlaneHypothesis> planes = ToRoofPlanes(groups);
+  EXPECT_TRUE(DropOrphanedPlanes(&planes, o).empty());
+  ASSERT_EQ(planes.size(), 4u);
+  // The ridge's three-line partner is rejected (say by the verification):
+  // the one-line face loses its virtual line; the far pair is untouched.
+  planes.erase(planes.begin() + 1);
+  const std::vector<std::string> reasons = DropOrphanedPlanes(&planes, o);
+  ASSERT_EQ(reasons.size(), 1u);
+  EXPECT_NE(reasons[0].find("plane 0 (line 1)"), std::string::npos) << reasons[0];
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "plane 2 (line 3)");
+  // Planes with two real lines stand alone.
+  planes.erase(planes.begin());
+  EXPECT_TRUE(DropOrphanedPlanes(&planes, o).empty());
+  EXPECT_EQ(planes.size(), 1u);
+}
+
 TEST(PlaneGrouping, PlanesNeedTwoLines) {
   std::vector<PlaneGroup> planes(3);
   planes[0].lines = {4};

@@ -299,6 +299,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     const size_t n_verified = verified.size();
     const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping.max_overlap);
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    const std::vector<std::string> orphans = DropOrphanedPlanes(&verified, r.grouping);
+    out.rejected.insert(out.rejected.end(), orphans.begin(), orphans.end());
     out.stages.push_back({"verification",
                           StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
                                     n_verified, n_planes, verified.size()),
