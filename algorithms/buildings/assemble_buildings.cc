@@ -419,6 +419,72 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
   return b;
 }
 
+// The outline moved onto the border lines of its planes (see
+// AssemblyOptions::border_lines): for each hull edge the qualifying line
+// farthest out; the hull is first grown out to the lines outside it, then
+// cut at each line. Convex in, convex out.
+Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis>& planes,
+                        const std::vector<int>& active, const AssemblyOptions& o) {
+  if (!o.border_lines || hull.size() < 3) return hull;
+  const double cos_max = std::cos(o.border_max_angle_deg * kDeg);
+  const size_t n = hull.size();
+  // Per hull edge: the chosen line's offset along the outward normal.
+  std::vector<double> best(n, -std::numeric_limits<double>::infinity());
+  std::vector<std::array<Eigen::Vector2d, 2>> chosen(n);
+  for (int i : active)
+    for (const auto& l : planes[i].lines_xy) {
+      const Eigen::Vector2d d = l[1] - l[0];
+      const double len = d.norm();
+      if (len < 1e-6) continue;
+      for (size_t k = 0; k < n; ++k) {
+        const Eigen::Vector2d a = hull[k], b = hull[(k + 1) % n];
+        const Eigen::Vector2d e = b - a;
+        const double elen = e.norm();
+        if (elen < 1e-6 || std::abs(e.dot(d)) < cos_max * elen * len) continue;
+        // Counter-clockwise ring: the outward normal is on the right.
+        const Eigen::Vector2d out(e.y() / elen, -e.x() / elen);
+        const double o0 = (l[0] - a).dot(out), o1 = (l[1] - a).dot(out);
+        if (std::max(std::abs(o0), std::abs(o1)) > o.border_max_offset_m) continue;
+        const Eigen::Vector2d u = e / elen;
+        const double t0 = std::clamp((l[0] - a).dot(u), 0.0, elen);
+        const double t1 = std::clamp((l[1] - a).dot(u), 0.0, elen);
+        if (std::abs(t1 - t0) < 0.5 * len) continue;
+        const double offset = 0.5 * (o0 + o1);
+        if (offset > best[k]) best[k] = offset, chosen[k] = l;
+      }
+    }
+  // An edge inside its line moves out to it whole (the line's end points
+  // alone would chamfer the corners); one outside is cut below.
+  std::vector<Eigen::Vector2d> pts(hull.begin(), hull.end());
+  bool any = false;
+  for (size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(best[k])) continue;
+    any = true;
+    if (best[k] <= 0) continue;
+    const Eigen::Vector2d a = hull[k], b = hull[(k + 1) % n];
+    const Eigen::Vector2d e = (b - a).normalized();
+    const Eigen::Vector2d out(e.y(), -e.x());
+    pts.push_back(a + best[k] * out);
+    pts.push_back(b + best[k] * out);
+  }
+  if (!any) return hull;
+  Ring2 r = ConvexHull(pts);
+  const Eigen::Vector2d c = Centroid(hull);
+  for (size_t k = 0; k < n && r.size() >= 3; ++k) {
+    if (!std::isfinite(best[k])) continue;
+    const Eigen::Vector2d p = chosen[k][0], q = chosen[k][1];
+    // Keep the side of the line holding the hull's centroid: a x + b y + c <= 0.
+    Eigen::Vector2d nrm(q.y() - p.y(), p.x() - q.x());
+    double off = -nrm.dot(p);
+    if (nrm.dot(c) + off > 0) nrm = -nrm, off = -off;
+    r = ClipHalfPlane(r, nrm.x(), nrm.y(), off);
+  }
+  // Clipping next to nearly collinear hull vertices can leave slivers of
+  // millimetres that the polygon clipper downstream rejects as invalid.
+  if (r.size() >= 3) r = ConvexHull(std::vector<Eigen::Vector2d>(r.begin(), r.end()));
+  return r.size() >= 3 && SignedArea(r) > 1e-9 ? r : hull;
+}
+
 // Connected pieces of `active` (ascending plane indices) under `links`,
 // each ascending, ordered by their smallest index.
 std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
@@ -574,9 +640,19 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     while (!env) {
       std::vector<Eigen::Vector2d> all;
       for (int i : active) all.insert(all.end(), planes[i].patch.begin(), planes[i].patch.end());
-      Ring2 outline = ConvexHull(all);
+      Ring2 outline = FollowBorderLines(ConvexHull(all), planes, active, o);
       if (fp && outline.size() >= 3) {
-        std::vector<Ring2> pieces = IntersectPolygons(outline, fp->outline);
+        // Both convex (most footprints): the exact convex clip. Boost's
+        // overlay returns nothing at all when an outline edge runs along
+        // the footprint's edge within millimetres, as one cut at a border
+        // line on the footprint does.
+        std::vector<Ring2> pieces;
+        if (IsConvexRing(fp->outline)) {
+          Ring2 piece = IntersectConvex(outline, fp->outline);
+          if (piece.size() >= 3) pieces.push_back(std::move(piece));
+        } else {
+          pieces = IntersectPolygons(outline, fp->outline);
+        }
         auto largest = std::max_element(
             pieces.begin(), pieces.end(),
             [](const Ring2& a, const Ring2& b) { return SignedArea(a) < SignedArea(b); });

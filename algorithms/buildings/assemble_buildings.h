@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct RoofPlaneHypothesis {
   double longest_line_m = 0;           // length of the longest of them
   double similarity = 0;               // mean Sim of its half-planes
   std::string id;                      // for the log ("plane 12")
+  // Plan view (x, y) of its supporting 3D lines: where one runs along the
+  // building's outline, the outline follows the line (B&Z §5 delineation
+  // by border lines) rather than the edge of the patches.
+  std::vector<std::array<Eigen::Vector2d, 2>> lines_xy;
   // Proposed by a completion step from another plane rather than found by
   // the sweep over this patch: in conflicts it yields to every found plane
   // (completion fills gaps, it does not overrule direct evidence).
@@ -82,6 +87,14 @@ struct AssemblyOptions {
   // not become a shed roof over all of it; faces seen on both sides are
   // covered 0.9-1.
   double footprint_min_support = 0.75;
+  // Border lines: a supporting line within border_max_offset_m of an edge
+  // of the outline (the convex hull of the patches) and within
+  // border_max_angle_deg of it, over at least half its length, moves that
+  // edge onto itself; the patches stop short of their lines (the sweep's
+  // windows keep off them) or run past the eaves.
+  bool border_lines = true;
+  double border_max_offset_m = 1.0;
+  double border_max_angle_deg = 10.0;
   // Vertices closer than this are welded so that neighbouring faces share
   // them exactly.
   double weld_m = 1e-3;

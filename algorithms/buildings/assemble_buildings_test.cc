@@ -205,6 +205,35 @@ TEST(AssembleBuildings, AFaceHiddenByAnUnsupportedPlaneOutlivesIt) {
   ExpectAllValid(r);
 }
 
+TEST(AssembleBuildings, TheOutlineFollowsTheBorderLines) {
+  // The south face's patch stops 0.4 m short of its eave, the north face's
+  // runs 0.6 m past it (into the garden); both eaves were matched as lines.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in[0].patch = ConvexHull({{0, 0.4}, {10, 0.4}, {10, 4}, {0, 4}});
+  in[1].patch = ConvexHull({{0, 4}, {10, 4}, {10, 8.6}, {0, 8.6}});
+  in[0].lines_xy = {{Eigen::Vector2d(0.5, 0), Eigen::Vector2d(9.5, 0)}};
+  in[1].lines_xy = {{Eigen::Vector2d(9, 8), Eigen::Vector2d(1, 8)}};
+  // A ridge line inside the outline and a verge at 30 degrees to every
+  // edge move nothing.
+  in[0].lines_xy.push_back({Eigen::Vector2d(0, 4), Eigen::Vector2d(10, 4)});
+  in[1].lines_xy.push_back({Eigen::Vector2d(10, 4), Eigen::Vector2d(10 - 4 * std::sqrt(3.0), 8)});
+  AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_NEAR(r.model.buildings[0].double_attributes.at("footprint_m2"), 80, 1e-6);
+  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  ExpectAllValid(r);
+  AssemblyOptions o;
+  o.border_lines = false;  // the patches' own extent: 10 x 8.2 m
+  r = AssembleBuildings(in, Flat(0), o);
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_NEAR(r.model.buildings[0].double_attributes.at("footprint_m2"), 82, 1e-6);
+  // A line farther than border_max_offset_m from the outline is not a border.
+  in[0].lines_xy[0] = {Eigen::Vector2d(0.5, -1.5), Eigen::Vector2d(9.5, -1.5)};
+  r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_NEAR(r.model.buildings[0].double_attributes.at("footprint_m2"), 76, 1e-6);
+}
+
 TEST(AssembleBuildings, ValleySplitsIntoConvexPartsOfOneBuilding) {
   // A butterfly roof: two planes falling towards a valley at y = 4. One
   // lower envelope would turn the V upside down; two parts keep it.

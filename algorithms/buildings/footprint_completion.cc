@@ -85,6 +85,7 @@ std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
         q.patch = std::move(patch);
         q.score = 0;
         q.derived = true;
+        q.lines_xy.clear();  // the neighbour's lines bound the neighbour
         // Named after the plane the sweep found, not the chain of houses.
         q.id = p.id.substr(0, p.id.find(kExtended)) + kExtended + footprints[f].id;
         mine.push_back(std::move(q));

@@ -302,7 +302,8 @@ std::vector<std::string> DropOrphanedPlanes(std::vector<RoofPlaneHypothesis>* pl
   return reasons;
 }
 
-std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups) {
+std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups,
+                                              const std::vector<SweepLine>* lines) {
   std::vector<RoofPlaneHypothesis> out;
   for (size_t k = 0; k < groups.size(); ++k) {
     const PlaneGroup& g = groups[k];
@@ -313,6 +314,10 @@ std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& gro
     h.lines = static_cast<int>(g.lines.size());
     h.longest_line_m = g.longest_line_m;
     h.similarity = g.similarity;
+    if (lines)
+      for (int l : g.lines)
+        if (l >= 0 && l < static_cast<int>(lines->size()))
+          h.lines_xy.push_back({(*lines)[l].segment.a.head<2>(), (*lines)[l].segment.b.head<2>()});
     char buf[64];
     std::snprintf(buf, sizeof buf, "plane %zu (line %d)", k, g.lines.empty() ? -1 : g.lines[0]);
     h.id = buf;

@@ -94,8 +94,10 @@ std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
 std::vector<std::string> DropOrphanedPlanes(std::vector<RoofPlaneHypothesis>* planes,
                                             const GroupingOptions& options);
 
-// The groups as the building assembly takes them.
-std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups);
+// The groups as the building assembly takes them; with `lines` (the
+// grouping's input) each carries the plan view of its lines.
+std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups,
+                                              const std::vector<SweepLine>* lines = nullptr);
 
 // Plan-view patch of one half-plane: the strip from the line to its reach.
 std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& half_plane,

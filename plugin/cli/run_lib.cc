@@ -288,7 +288,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // §5: every plane's patch verified against all views that see it, then
   // conflicts resolved by the verified evidence (patch area x score).
   t0 = Clock::now();
-  std::vector<RoofPlaneHypothesis> roof_planes = ToRoofPlanes(grouped.planes);
+  std::vector<RoofPlaneHypothesis> roof_planes = ToRoofPlanes(grouped.planes, &lines);
   {
     SubProgress verify_progress(progress, 0.95, 0.99);
     const std::vector<PlaneVerification> checks =
