@@ -428,6 +428,12 @@ Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis
   if (!o.border_lines || hull.size() < 3) return hull;
   const double cos_max = std::cos(o.border_max_angle_deg * kDeg);
   const size_t n = hull.size();
+  // Counter-clockwise ring: each edge's outward normal is on its right.
+  std::vector<Eigen::Vector2d> outward(n);
+  for (size_t k = 0; k < n; ++k) {
+    const Eigen::Vector2d e = (hull[(k + 1) % n] - hull[k]).normalized();
+    outward[k] = Eigen::Vector2d(e.y(), -e.x());
+  }
   // Per hull edge: the chosen line's offset along the outward normal.
   std::vector<double> best(n, -std::numeric_limits<double>::infinity());
   std::vector<std::array<Eigen::Vector2d, 2>> chosen(n);
@@ -441,9 +447,7 @@ Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis
         const Eigen::Vector2d e = b - a;
         const double elen = e.norm();
         if (elen < 1e-6 || std::abs(e.dot(d)) < cos_max * elen * len) continue;
-        // Counter-clockwise ring: the outward normal is on the right.
-        const Eigen::Vector2d out(e.y() / elen, -e.x() / elen);
-        const double o0 = (l[0] - a).dot(out), o1 = (l[1] - a).dot(out);
+        const double o0 = (l[0] - a).dot(outward[k]), o1 = (l[1] - a).dot(outward[k]);
         if (std::max(std::abs(o0), std::abs(o1)) > o.border_max_offset_m) continue;
         const Eigen::Vector2d u = e / elen;
         const double t0 = std::clamp((l[0] - a).dot(u), 0.0, elen);
@@ -461,11 +465,8 @@ Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis
     if (!std::isfinite(best[k])) continue;
     any = true;
     if (best[k] <= 0) continue;
-    const Eigen::Vector2d a = hull[k], b = hull[(k + 1) % n];
-    const Eigen::Vector2d e = (b - a).normalized();
-    const Eigen::Vector2d out(e.y(), -e.x());
-    pts.push_back(a + best[k] * out);
-    pts.push_back(b + best[k] * out);
+    pts.push_back(hull[k] + best[k] * outward[k]);
+    pts.push_back(hull[(k + 1) % n] + best[k] * outward[k]);
   }
   if (!any) return hull;
   Ring2 r = ConvexHull(pts);
@@ -642,17 +643,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       for (int i : active) all.insert(all.end(), planes[i].patch.begin(), planes[i].patch.end());
       Ring2 outline = FollowBorderLines(ConvexHull(all), planes, active, o);
       if (fp && outline.size() >= 3) {
-        // Both convex (most footprints): the exact convex clip. Boost's
-        // overlay returns nothing at all when an outline edge runs along
-        // the footprint's edge within millimetres, as one cut at a border
-        // line on the footprint does.
-        std::vector<Ring2> pieces;
-        if (IsConvexRing(fp->outline)) {
-          Ring2 piece = IntersectConvex(outline, fp->outline);
-          if (piece.size() >= 3) pieces.push_back(std::move(piece));
-        } else {
-          pieces = IntersectPolygons(outline, fp->outline);
-        }
+        std::vector<Ring2> pieces = IntersectPolygons(outline, fp->outline);
         auto largest = std::max_element(
             pieces.begin(), pieces.end(),
             [](const Ring2& a, const Ring2& b) { return SignedArea(a) < SignedArea(b); });

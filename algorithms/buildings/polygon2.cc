@@ -69,19 +69,40 @@ bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
   return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
 }
 
+namespace {
+
+// Appends `ring` to `out` without repeated vertices, when it has area.
+void AddPiece(const std::vector<Eigen::Vector2d>& ring, std::vector<Ring2>* out) {
+  Ring2 r;
+  for (const Eigen::Vector2d& q : ring)
+    if (r.empty() || (q - r.back()).norm() > 1e-9) r.push_back(q);
+  while (r.size() > 1 && (r.front() - r.back()).norm() <= 1e-9) r.pop_back();
+  if (r.size() >= 3 && SignedArea(r) > 1e-9) out->push_back(std::move(r));
+}
+
+Ring2 CounterClockwise(Ring2 r) {
+  if (SignedArea(r) < 0) std::reverse(r.begin(), r.end());
+  return r;
+}
+
+}  // namespace
+
 std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b) {
   std::vector<Ring2> out;
   if (a.size() < 3 || b.size() < 3) return out;
+  // Two convex rings (most patches and footprints): the exact convex clip.
+  // Boost's overlay returned no piece at all for a convex outline running
+  // along a footprint's edge within millimetres.
+  if (IsConvexRing(a) && IsConvexRing(b)) {
+    AddPiece(IntersectConvex(CounterClockwise(a), CounterClockwise(b)), &out);
+    return out;
+  }
   std::vector<Polygon> pieces;
   bg::intersection(ToBoost(a), ToBoost(b), pieces);
   for (const Polygon& p : pieces) {
-    Ring2 r;
-    for (const Point& v : p.outer()) {
-      const Eigen::Vector2d q(v.x(), v.y());
-      if (r.empty() || (q - r.back()).norm() > 1e-9) r.push_back(q);
-    }
-    while (r.size() > 1 && (r.front() - r.back()).norm() <= 1e-9) r.pop_back();
-    if (r.size() >= 3 && SignedArea(r) > 1e-9) out.push_back(std::move(r));
+    std::vector<Eigen::Vector2d> ring;
+    for (const Point& v : p.outer()) ring.emplace_back(v.x(), v.y());
+    AddPiece(ring, &out);
   }
   return out;
 }

@@ -21,6 +21,7 @@ bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b);
 
 // The pieces of a ∩ b, each counter-clockwise, first vertex not repeated;
 // empty when they do not overlap. Either ring may have either orientation.
+// Two convex rings are clipped exactly by IntersectConvex, others by Boost.
 std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b);
 
 // Area of a ∩ b (m²).

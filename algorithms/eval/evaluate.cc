@@ -351,16 +351,12 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
   ScoreSegmentation(rr, rt, overlaps, options.segmentation_overlap_fraction, &s);
   out.result_planes = Records(res, result, mr, rt);
   out.reference_planes = Records(ref, truth, mt, rr);
-  for (const PlaneRecord& p : out.reference_planes)
-    if (p.plan_area >= options.large_plane_m2) {
-      ++s.n_reference_large;
-      s.tp_reference_large += p.true_positive;
-    }
-  for (const PlaneRecord& p : out.result_planes)
-    if (p.plan_area >= options.large_plane_m2) {
-      ++s.n_result_large;
-      s.tp_result_large += p.true_positive;
-    }
+  auto count_large = [&](const std::vector<PlaneRecord>& planes, int* n, int* tp) {
+    for (const PlaneRecord& p : planes)
+      if (p.plan_area >= options.large_plane_m2) ++*n, *tp += p.true_positive;
+  };
+  count_large(out.reference_planes, &s.n_reference_large, &s.tp_reference_large);
+  count_large(out.result_planes, &s.n_result_large, &s.tp_result_large);
   s.completeness_large = Ratio(s.tp_reference_large, s.n_reference_large);
   s.correctness_large = Ratio(s.tp_result_large, s.n_result_large);
 
