@@ -4,17 +4,6 @@
 
 namespace roofsweep {
 
-bool SampleBilinear(const cv::Mat& image, double x, double y, float* value) {
-  if (!(x >= 0 && y >= 0 && x <= image.cols - 1 && y <= image.rows - 1)) return false;
-  const int x0 = std::min(static_cast<int>(x), image.cols - 2);
-  const int y0 = std::min(static_cast<int>(y), image.rows - 2);
-  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
-  const float* r0 = image.ptr<float>(y0) + x0;
-  const float* r1 = image.ptr<float>(y0 + 1) + x0;
-  *value = (1 - fy) * ((1 - fx) * r0[0] + fx * r0[1]) + fy * ((1 - fx) * r1[0] + fx * r1[1]);
-  return true;
-}
-
 std::array<int, 5> AffineWindow::Probes(int r) {
   const int w = 2 * r + 1, c = (w * w) / 2;
   return {c, c - r, c + r, c - r * w, c + r * w};
@@ -29,14 +18,35 @@ AffineWindow::AffineWindow(const std::array<Eigen::Vector2d, 5>& q, int r) : r_(
 
 bool AffineWindow::Sample(const cv::Mat& image, float* values, double* sum) const {
   *sum = 0;
-  for (int iy = 0, k = 0; iy <= 2 * r_; ++iy) {
-    const Eigen::Vector2d row = origin_ + iy * dy_;
-    for (int ix = 0; ix <= 2 * r_; ++ix, ++k) {
-      const Eigen::Vector2d at = row + ix * dx_;
-      if (!SampleBilinear(image, at.x(), at.y(), &values[k])) return false;
-      *sum += values[k];
+  // The window is an affine image of a square, so it lies inside the image
+  // rectangle exactly when its four corners do; checking them once lets the
+  // innermost loop sample without a bounds test per pixel.
+  const double n = 2 * r_;
+  for (const Eigen::Vector2d& c :
+       {origin_, Eigen::Vector2d(origin_ + n * dx_), Eigen::Vector2d(origin_ + n * dy_),
+        Eigen::Vector2d(origin_ + n * dy_ + n * dx_)})
+    if (!(c.x() >= 0 && c.y() >= 0 && c.x() <= image.cols - 1 && c.y() <= image.rows - 1))
+      return false;
+  const int w = 2 * r_ + 1, max_x = image.cols - 2, max_y = image.rows - 2;
+  const size_t step = image.step1();
+  const float* data = image.ptr<float>(0);
+  double total = 0;
+  for (int iy = 0, k = 0; iy < w; ++iy) {
+    const double row_x = origin_.x() + iy * dy_.x(), row_y = origin_.y() + iy * dy_.y();
+    for (int ix = 0; ix < w; ++ix, ++k) {
+      const double x = row_x + ix * dx_.x(), y = row_y + ix * dx_.y();
+      // Inside the corners, so x, y >= 0 up to rounding: the cast is the
+      // floor, and only the last column and row need clamping.
+      const int x0 = std::min(static_cast<int>(x), max_x),
+                y0 = std::min(static_cast<int>(y), max_y);
+      const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+      const float* r0 = data + y0 * step + x0;
+      const float* r1 = r0 + step;
+      values[k] = (1 - fy) * ((1 - fx) * r0[0] + fx * r0[1]) + fy * ((1 - fx) * r1[0] + fx * r1[1]);
+      total += values[k];
     }
   }
+  *sum = total;
   return true;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -71,8 +72,24 @@ class SideSimilarity {
 };
 
 // Bilinear sample of a CV_32F image at array coordinates (pixel centre of
-// (0, 0) at 0, 0); false outside [0, cols - 1] x [0, rows - 1].
-bool SampleBilinear(const cv::Mat& image, double x, double y, float* value);
+// (0, 0) at 0, 0) known to lie within [0, cols - 1] x [0, rows - 1] (up to
+// rounding: the cell index is clamped, so it never reads outside). Inline
+// because it is the sweep's and the verification's innermost operation.
+inline float SampleBilinearInside(const cv::Mat& image, double x, double y) {
+  const int x0 = std::clamp(static_cast<int>(x), 0, image.cols - 2);
+  const int y0 = std::clamp(static_cast<int>(y), 0, image.rows - 2);
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  const float* r0 = image.ptr<float>(y0) + x0;
+  const float* r1 = image.ptr<float>(y0 + 1) + x0;
+  return (1 - fy) * ((1 - fx) * r0[0] + fx * r0[1]) + fy * ((1 - fx) * r1[0] + fx * r1[1]);
+}
+
+// As above, but false outside [0, cols - 1] x [0, rows - 1].
+inline bool SampleBilinear(const cv::Mat& image, double x, double y, float* value) {
+  if (!(x >= 0 && y >= 0 && x <= image.cols - 1 && y <= image.rows - 1)) return false;
+  *value = SampleBilinearInside(image, x, y);
+  return true;
+}
 
 // A (2 r + 1)^2 correlation window (row-major, top-left first) mapped into
 // another image exactly at its centre and edge midpoints and affinely in

@@ -98,16 +98,24 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
     const int rv = seen[refv].first;
     const Camera& rcam = block.CameraOf(block.views[rv]);
     const Pose& rpose = block.views[rv].pose;
-    // The window's pixels lifted onto the plane once, reused for every view.
+    // Only the five probes of the window are lifted onto the plane (once,
+    // reused for every view): the other views map the window affinely from
+    // them. The corners are lifted too, as a check that the whole window
+    // sees the plane in front of the camera.
     std::vector<Eigen::Vector3d> lifted(w * w);
+    const std::array<int, 5> probe = AffineWindow::Probes(r);
     bool ok = true;
+    for (int k :
+         {probe[0], probe[1], probe[2], probe[3], probe[4], 0, w - 1, w * (w - 1), w * w - 1}) {
+      const Eigen::Vector2d px = seen[refv].second + Eigen::Vector2d(k % w - r, k / w - r);
+      ok = ok && OnPlane(rcam, rpose, pl, px, &lifted[k]);
+    }
     double mean = 0;
     for (int dy = -r, k = 0; dy <= r && ok; ++dy)
       for (int dx = -r; dx <= r; ++dx, ++k) {
         const Eigen::Vector2d px = seen[refv].second + Eigen::Vector2d(dx, dy);
         float val;
-        ok = ok && OnPlane(rcam, rpose, pl, px, &lifted[k]) &&
-             SampleBilinear(grey[rv], px.x() - 0.5, px.y() - 0.5, &val);
+        ok = SampleBilinear(grey[rv], px.x() - 0.5, px.y() - 0.5, &val);
         if (!ok) break;
         ref[k] = val;
         mean += val;
@@ -125,7 +133,6 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
       const Camera& cam = block.CameraOf(block.views[v]);
       const Pose& pose = block.views[v].pose;
       // Exactly at five pixels, affinely in between, as in the sweep.
-      const std::array<int, 5> probe = AffineWindow::Probes(r);
       std::array<Eigen::Vector2d, 5> q;
       bool inside = true;
       for (int j = 0; j < 5 && inside; ++j) {
