@@ -20,8 +20,10 @@
 #include "algorithms/matching/colour_balance.h"
 #include "algorithms/matching/correlation.h"
 #include "algorithms/matching/epipolar.h"
+#include "algorithms/matching/junction_completion.h"
 #include "algorithms/matching/line_triangulation.h"
 #include "algorithms/matching/view_features.h"
+#include "algorithms/matching/view_support.h"
 
 namespace roofsweep {
 namespace {
@@ -64,79 +66,6 @@ bool Shares(const std::vector<int>& a, const std::vector<int>& b) {
     for (int y : b)
       if (x == y) return true;
   return false;
-}
-
-// A detected segment of view k supporting the projection [a, b]: the one
-// overlapping it most, or -1.
-int SupportingSegment(const ViewFeatures& v, const Segment2D& proj, const MatchOptions& o) {
-  const Eigen::Vector2d d = proj.Direction(), n(-d.y(), d.x());
-  const double len = proj.Length(), cos_max = std::cos(o.verify_max_angle * kDeg);
-  int best = -1;
-  double best_overlap = 0;
-  for (int id : v.index->Near(proj, o.verify_distance)) {
-    const Segment2D& s = v.ideal[id];
-    if (s.Length() < 0.5 * o.min_length) continue;
-    if (std::abs(s.Direction().dot(d)) < cos_max) continue;
-    if (std::abs((s.p0 - proj.p0).dot(n)) > o.verify_distance ||
-        std::abs((s.p1 - proj.p0).dot(n)) > o.verify_distance)
-      continue;
-    const double u0 = (s.p0 - proj.p0).dot(d), u1 = (s.p1 - proj.p0).dot(d);
-    const double overlap = std::min(len, std::max(u0, u1)) - std::max(0.0, std::min(u0, u1));
-    if (overlap > best_overlap) {
-      best_overlap = overlap;
-      best = id;
-    }
-  }
-  return best_overlap >= std::min(o.verify_min_length, 0.5 * len) ? best : -1;
-}
-
-// Mean over the projection of the strongest L* gradient within 1 px across it.
-double GradientAlong(const ViewFeatures& v, const Segment2D& proj) {
-  const Eigen::Vector2d d = proj.Direction(), n(-d.y(), d.x());
-  const int steps = static_cast<int>(proj.Length());
-  double sum = 0;
-  int cnt = 0;
-  for (int k = 0; k < steps; ++k) {
-    double best = 0;
-    bool any = false;
-    for (double off : {-1.0, 0.0, 1.0}) {
-      const Eigen::Vector2d p = v.ToImage(proj.p0 + (k + 0.5) * d + off * n);
-      float g;
-      if (SampleBilinear(v.gradient, p, &g)) {
-        best = std::max(best, static_cast<double>(g));
-        any = true;
-      }
-    }
-    if (any) {
-      sum += best;
-      ++cnt;
-    }
-  }
-  return cnt > 0 ? sum / cnt : 0;
-}
-
-// Clips the segment a-b to the image rectangle (ideal coordinates taken as
-// image coordinates: distortion only moves the border slightly).
-bool ClipToImage(const ViewFeatures& v, Eigen::Vector2d* a, Eigen::Vector2d* b) {
-  double t0 = 0, t1 = 1;
-  const Eigen::Vector2d d = *b - *a;
-  const double lo[2] = {0, 0},
-               hi[2] = {static_cast<double>(v.lab.cols), static_cast<double>(v.lab.rows)};
-  for (int k = 0; k < 2; ++k) {
-    if (std::abs(d[k]) < 1e-12) {
-      if ((*a)[k] < lo[k] || (*a)[k] > hi[k]) return false;
-      continue;
-    }
-    double ta = (lo[k] - (*a)[k]) / d[k], tb = (hi[k] - (*a)[k]) / d[k];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-  }
-  if (t0 >= t1) return false;
-  const Eigen::Vector2d a0 = *a;
-  *a = a0 + t0 * d;
-  *b = a0 + t1 * d;
-  return true;
 }
 
 struct Verified {
@@ -341,34 +270,9 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   tbb::parallel_for(size_t{0}, hyps.size(), [&](size_t n) {
     Verified& vh = hyps[n];
     const PairHypothesis& h = vh.h;
-    int seeing = 0, supporting = 0, gradient_only = 0;
-    for (int k = 0; k < nv; ++k) {
-      if (k == h.vi || k == h.vj) continue;
-      auto a = ProjectIdeal(views[k], h.line.a), b = ProjectIdeal(views[k], h.line.b);
-      if (!a || !b) continue;
-      Eigen::Vector2d pa = *a, pb = *b;
-      if (!ClipToImage(views[k], &pa, &pb) || (pb - pa).norm() < o.verify_min_length) continue;
-      ++seeing;
-      Segment2D proj;
-      proj.p0 = pa;
-      proj.p1 = pb;
-      const int sup = SupportingSegment(views[k], proj, o);
-      if (sup >= 0) {
-        vh.support.emplace_back(k, sup);
-        ++supporting;
-      } else if (o.verify_min_gradient > 0 &&
-                 GradientAlong(views[k], proj) >= o.verify_min_gradient) {
-        gradient_only += 1;
-      }
-    }
-    // A detected segment counts fully, a gradient without a segment half.
-    const double support = supporting + 0.5 * gradient_only;
-    // Trifocal-style verification: every further view that sees the
-    // hypothesis is a chance to refute it, so the support needed grows with
-    // them (at least min_support_segments detected segments, or all of the
-    // seeing views when fewer see it).
-    accepted[n] = seeing == 0 || (supporting >= std::min(o.min_support_segments, seeing) &&
-                                  support >= std::max(1.0, o.min_support_fraction * seeing));
+    const ViewSupport vs = SupportInViews(views, h.line, {h.vi, h.vj}, o);
+    vh.support = vs.segments;
+    accepted[n] = vs.Accepted(o);
     vh.h.score += static_cast<double>(vh.support.size());
   });
   std::vector<Verified> kept;
@@ -492,6 +396,21 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       for (int m : members) res.lines.push_back(good[m]);
     }
   }
+  if (o.junction_completion) {
+    JunctionCompletion jc = CompleteAtJunctions(views, res.lines, z_range, o);
+    res.funnel.junction_candidates = jc.candidates;
+    res.funnel.junction_verified = jc.verified;
+    res.funnel.junction_lines = static_cast<int>(jc.lines.size());
+    if (truth) {
+      res.funnel.junction_true = 0;
+      for (const Line3D& l : jc.lines) {
+        const auto& [v0, s0] = l.observations[0];
+        const auto& [v1, s1] = l.observations[1];
+        res.funnel.junction_true += Shares(labels[v0][s0], labels[v1][s1]);
+      }
+    }
+    for (Line3D& l : jc.lines) res.lines.push_back(std::move(l));
+  }
   res.funnel.lines = static_cast<int>(res.lines.size());
   res.timings.triangulate_s = Seconds(t0);
   ReportOrCancel(progress, 1.0, "done");
@@ -528,6 +447,16 @@ std::string FormatFunnel(const MatchFunnel& f) {
   std::snprintf(buf, sizeof buf, "  segment/pair combinations skipped as nearly epipolar: %lld\n",
                 f.skipped_epipolar);
   out << buf;
+  std::snprintf(buf, sizeof buf,
+                "  junction completion: %lld unused segments anchored at both ends, %lld "
+                "verified, %d 3D lines added",
+                f.junction_candidates, f.junction_verified, f.junction_lines);
+  out << buf;
+  if (f.junction_true >= 0) {
+    std::snprintf(buf, sizeof buf, " (%d on a true edge)", f.junction_true);
+    out << buf;
+  }
+  out << "\n";
   return out.str();
 }
 

@@ -25,6 +25,9 @@ struct Line3D {
   // observation, walking a -> b.
   Eigen::Vector3f colour_left = Eigen::Vector3f::Zero();
   Eigen::Vector3f colour_right = Eigen::Vector3f::Zero();
+  // Depth from the 3D lines at its ends rather than from stereo
+  // (CompleteAtJunctions).
+  bool from_junctions = false;
   int Views() const { return static_cast<int>(observations.size()); }
 };
 
@@ -36,6 +39,11 @@ struct MatchFunnel {
   long long skipped_epipolar = 0;  // segment/pair combinations nearly along the epipolar lines
   long long geometric = 0, chromatic = 0, correlation = 0, verified = 0, assigned = 0;
   int lines_before_merge = 0, lines = 0;
+  // Junction completion: unused segments anchored at both ends, those that
+  // passed the verification, and the lines added (included in `lines`).
+  long long junction_candidates = 0, junction_verified = 0;
+  int junction_lines = 0;
+  int junction_true = -1;  // with truth: added lines whose observations share a true edge
   // Ground truth (-1: unknown): true pairs among all segment pairs of
   // overlapping views, and how many of them survive each stage.
   long long true_all = -1, true_geometric = -1, true_chromatic = -1, true_correlation = -1,

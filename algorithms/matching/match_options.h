@@ -110,6 +110,18 @@ struct MatchOptions {
   // At least this many views must observe a final line.
   int min_views = 2;
 
+  // ---- junction completion (CompleteAtJunctions): segments no stereo pair
+  // reached, reconstructed from the 3D lines their ends meet. The end must
+  // come within junction_px of the anchor's piercing point, which must lie
+  // within junction_gap_m of the anchor's end (edge detectors stop a few
+  // pixels short of corners: 1 m is 20 px at 5 cm GSD) and pierce the
+  // segment's interpretation plane at junction_min_angle or more.
+  bool junction_completion = true;
+  double junction_px = 6.0;
+  double junction_gap_m = 1.0;
+  double junction_min_angle = 15.0;
+  double junction_min_length_m = 1.0;
+
   // Seed of the random threshold initialisation.
   unsigned seed = 1;
 };

@@ -10,7 +10,7 @@ namespace {
 
 int Match(const std::vector<std::string>& args, Context& ctx) {
   MatchRequest r;
-  bool init_best = false;
+  bool init_best = false, no_junctions = false;
   ArgParser p("match",
               "Matches straight colour edge segments across the views of a block and writes 3D "
               "lines (Scholze et al. 2000): geometric, chromatic and correlation tests, "
@@ -38,10 +38,13 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
               "a segment meeting a pair's epipolar lines at less than DEG is matched in other "
               "pairs only (default 20; the paper: 40)")
       .Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
+      .Flag("-no_junctions", &no_junctions,
+            "do not complete lines along the epipolar lines from the 3D lines at their ends")
       .Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
   if (!p.Parse(args)) return 0;
   r.match.init_from_best_correlation = init_best;
+  r.match.junction_completion = !no_junctions;
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
   if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());

@@ -8,9 +8,11 @@ namespace roofsweep::cli {
 namespace {
 
 // Options shared by `run` and `sweep`, with the papers' defaults.
-void AddProcessingOptions(ArgParser& p, RunRequest& r, bool* init_best_out) {
+void AddProcessingOptions(ArgParser& p, RunRequest& r, bool* init_best_out, bool* no_junctions) {
   bool& init_best = *init_best_out;
   p.Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
+      .Flag("-no_junctions", no_junctions,
+            "do not complete lines along the epipolar lines from the 3D lines at their ends")
       .Flag("-chromatic_init_best", &init_best,
             "chromatic thresholds from the best-correlating candidates (keeps more true pairs, ~2x "
             "slower)")
@@ -75,14 +77,15 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "intersection with a neighbouring plane (default 2, as in the paper)")
       .Flag("-sweep_planes_only", &sweep_only,
             "planes from the sweep only, not also from pairs of coplanar lines");
-  bool init_best = false;
-  AddProcessingOptions(p, r, &init_best);
+  bool init_best = false, no_junctions = false;
+  AddProcessingOptions(p, r, &init_best, &no_junctions);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite")
       .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg");
   if (!p.Parse(args)) return 0;
   r.line_planes = !sweep_only;
   r.match.init_from_best_correlation = init_best;
+  r.match.junction_completion = !no_junctions;
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);
@@ -106,11 +109,12 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
       .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
       .Option("-report", &r.report, "FILE", "JSON report with the stage table");
-  bool init_best = false;
-  AddProcessingOptions(p, r, &init_best);
+  bool init_best = false, no_junctions = false;
+  AddProcessingOptions(p, r, &init_best, &no_junctions);
   p.Example("roofsweep sweep out/block -o half_planes.gpkg");
   if (!p.Parse(args)) return 0;
   r.match.init_from_best_correlation = init_best;
+  r.match.junction_completion = !no_junctions;
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);
