@@ -28,7 +28,8 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
               "reproject the lines from the block CRS through PROJ (ballpark height steps "
               "refused)")
       .Option("-truth", &r.truth, "FILE",
-              "groundtruth_edges.json of `roofsweep simulate`: true-pair counts and line scores")
+              "groundtruth_edges.json of `roofsweep simulate` (true-pair counts and line scores), "
+              "or an Oxford VGG set folder (match precision/recall against nview-lines)")
       .Flag("-chromatic_init_best", &init_best,
             "chromatic thresholds from the best-correlating candidates (keeps more true pairs, ~2x "
             "slower)")

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "algorithms/core/error.h"
@@ -15,6 +16,7 @@
 #include "io/core/image_io.h"
 #include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
+#include "io/orientation/vgg_annotations.h"
 
 namespace roofsweep {
 namespace {
@@ -33,6 +35,35 @@ std::string Hex(const Eigen::Vector3f& c) {
 bool IsRoofKind(const std::string& k) {
   return k == "ridge" || k == "hip" || k == "valley" || k == "break" || k == "eave" ||
          k == "verge" || k == "wall_top" || k == "step" || k == "party" || k == "roof_other";
+}
+
+// The matches against a VGG set's annotation, its views found by name.
+eval::MatchScores ScoreAgainstVgg(const orientation::VggLineAnnotations& a, const Block& block,
+                                  const LocalFrame& frame, const MatchResult& result,
+                                  const std::string& folder) {
+  eval::LineTracks t;
+  const int nv = static_cast<int>(block.views.size());
+  std::vector<int> column(nv, -1);
+  for (int v = 0; v < nv; ++v) {
+    const auto it = std::find(a.views.begin(), a.views.end(), block.views[v].name);
+    if (it == a.views.end())
+      throw Error(folder + ": no annotated lines for view " + block.views[v].name);
+    column[v] = static_cast<int>(it - a.views.begin());
+    t.lines.push_back(a.lines[column[v]]);
+  }
+  for (const auto& row : a.rows) {
+    std::vector<int> mine(nv);
+    for (int v = 0; v < nv; ++v) mine[v] = row[column[v]];
+    t.rows.push_back(std::move(mine));
+  }
+  t.lines3d = a.lines3d;
+  std::vector<std::vector<std::pair<int, int>>> observations;
+  std::vector<Segment3> lines;
+  for (const Line3D& l : result.lines) {
+    observations.push_back(l.observations);
+    lines.push_back({frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)});
+  }
+  return eval::EvaluateMatches(result.segments, observations, lines, t);
 }
 
 }  // namespace
@@ -74,16 +105,20 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
 
   std::vector<Segment3> truth_local;
   SegmentSet truth;
-  if (!r.truth.empty()) {
+  std::optional<orientation::VggLineAnnotations> vgg;
+  if (!r.truth.empty() && std::filesystem::is_directory(r.truth)) {
+    vgg = orientation::ReadVggLineAnnotations(r.truth);
+  } else if (!r.truth.empty()) {
     truth = ReadSegmentsJson(r.truth);
     for (const LabelledSegment& s : truth.segments)
       truth_local.push_back({frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)});
   }
   SubProgress sub(progress, 0.0, 0.95);
-  out.result =
-      MatchLines(block, images, r.match, r.edges, sub, r.truth.empty() ? nullptr : &truth_local);
+  out.result = MatchLines(block, images, r.match, r.edges, sub,
+                          r.truth.empty() || vgg ? nullptr : &truth_local);
+  if (vgg) out.annotated = ScoreAgainstVgg(*vgg, block, frame, out.result, r.truth);
 
-  if (!r.truth.empty()) {
+  if (!r.truth.empty() && !vgg) {
     std::vector<Segment3> lines, roof, extra;
     for (const Line3D& l : out.result.lines) lines.push_back(l.segment);
     for (size_t k = 0; k < truth.segments.size(); ++k)
@@ -140,6 +175,29 @@ std::string FormatMatchSummary(const MatchSummary& s) {
                   "completeness %.1f%%, roof-edge completeness %.1f%%\n",
                   pct(s.precision), pct(s.completeness), pct(s.roof_edge_completeness));
     o << buf;
+  }
+  if (s.annotated) {
+    const eval::MatchScores& m = *s.annotated;
+    auto pct = [](double a, double b) { return b > 0 ? 100.0 * a / b : 0.0; };
+    std::snprintf(buf, sizeof buf,
+                  "Against the annotated correspondences (2 px, 5 deg):\n"
+                  "  match precision %.1f%% (%lld of %lld judged pairs; lines: %d of %d)\n"
+                  "  recall %.1f%% of annotated pairs (%lld of %lld), %.1f%% of annotated lines "
+                  "(%d of %d)\n",
+                  pct(m.pairs_correct, m.pairs_evaluable), m.pairs_correct, m.pairs_evaluable,
+                  m.lines_correct, m.lines_evaluable,
+                  pct(m.annotated_pairs_found, m.annotated_pairs), m.annotated_pairs_found,
+                  m.annotated_pairs, pct(m.annotated_lines_found, m.annotated_lines),
+                  m.annotated_lines_found, m.annotated_lines);
+    o << buf;
+    if (m.lines_3d > 0) {
+      std::snprintf(buf, sizeof buf,
+                    "  3D: median distance to the annotated 3D line %.3g (%.2f%% of the scene "
+                    "size %.3g), %d lines\n",
+                    m.median_distance_3d, pct(m.median_distance_3d, m.scene_size), m.scene_size,
+                    m.lines_3d);
+      o << buf;
+    }
   }
   return o.str();
 }

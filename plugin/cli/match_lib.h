@@ -6,6 +6,7 @@
 
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
+#include "algorithms/eval/match_eval.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/matching/match_options.h"
 
@@ -19,8 +20,10 @@ struct MatchRequest {
   std::vector<std::string> dataset_options, layer_options;  // -dsco, -lco NAME=VALUE
   std::string assign_crs;  // -a_srs: CRS written without transforming (block CRS otherwise)
   std::string target_crs;  // -t_srs: reproject the lines from the block CRS (excludes -a_srs)
-  // Optional ground truth (groundtruth_edges.json of `roofsweep simulate`):
-  // adds the true-pair counts to the funnel and scores the lines.
+  // Optional ground truth: groundtruth_edges.json of `roofsweep simulate`
+  // (adds the true-pair counts to the funnel and scores the lines), or the
+  // folder of an Oxford VGG set (scores the matches against its annotated
+  // line correspondences, nview-lines, and the 3D lines against l3d).
   std::string truth;
   MatchOptions match;
   EdgeOptions edges;
@@ -31,6 +34,8 @@ struct MatchSummary {
   double read_s = 0, write_s = 0;
   // With truth: length-based scores within 10 cm / 10 degrees.
   std::optional<double> precision, completeness, roof_edge_completeness;
+  // With a VGG set as truth.
+  std::optional<eval::MatchScores> annotated;
 };
 
 // `roofsweep match`: reads the block and its images, extracts segments,
