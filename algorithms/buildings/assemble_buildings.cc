@@ -263,6 +263,7 @@ struct Envelope {
   Ring2 outline;
   double ground_z = 0;
   std::vector<std::vector<Ring2>> regions;  // pieces of each active plane's face
+  std::vector<double> face_area;            // per active plane
   int worst = -1;                           // index into active; -1: every face is supported
   std::string worst_reason;
 };
@@ -280,6 +281,7 @@ Envelope LowerEnvelope(const std::vector<RoofPlaneHypothesis>& planes,
   const bool convex = IsConvexRing(outline);
   const Ring2 hull = convex ? outline : ConvexHull(outline);
   e.regions.assign(active.size(), {});
+  e.face_area.assign(active.size(), 0.0);
   double worst_value = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < active.size(); ++k) {
     const int i = active[k];
@@ -299,6 +301,7 @@ Envelope LowerEnvelope(const std::vector<RoofPlaneHypothesis>& planes,
         seen += IntersectionArea(r, grown[i]);
       }
     }
+    e.face_area[k] = area;
     const double support = area > 0 ? seen / area : 0.0;
     double low = std::numeric_limits<double>::infinity();
     for (const Ring2& r : e.regions[k])
@@ -656,8 +659,32 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         env = std::move(e);
         break;
       }
-      res.rejected.push_back(name(active[e.worst]) + e.worst_reason);
-      active.erase(active.begin() + e.worst);
+      // Hidden planes go on together with the hidden planes they form a
+      // convex part with (both sides of the higher neighbour's gable),
+      // the piece holding the largest hidden patch first.
+      std::vector<int> hidden;
+      int largest = -1;
+      double largest_patch = 0;
+      if (o.split_hidden)
+        for (size_t k = 0; k < active.size(); ++k) {
+          const double patch = std::abs(SignedArea(planes[active[k]].patch));
+          if (patch < o.min_face_area_m2 || e.face_area[k] >= o.hidden_max_fraction * patch)
+            continue;
+          hidden.push_back(active[k]);
+          if (patch > largest_patch) largest = active[k], largest_patch = patch;
+        }
+      if (!hidden.empty() && hidden.size() < active.size()) {
+        for (std::vector<int>& piece : ConnectedPieces(hidden, part_links)) {
+          if (std::find(piece.begin(), piece.end(), largest) == piece.end()) continue;
+          for (int i : piece) active.erase(std::find(active.begin(), active.end(), i));
+          groups.emplace_back(root, std::move(piece));
+          ++res.hypotheses;
+          break;
+        }
+      } else {
+        res.rejected.push_back(name(active[e.worst]) + e.worst_reason);
+        active.erase(active.begin() + e.worst);
+      }
       if (active.empty()) break;
       // One envelope over the hull of pieces that no longer touch would
       // roof the gap between them and let one house's planes cut the other.

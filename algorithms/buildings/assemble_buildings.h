@@ -62,6 +62,15 @@ struct AssemblyOptions {
   // recomputed: a plane may bound the roof only where the images saw it.
   double min_face_area_m2 = 1.0;
   double min_support = 0.3;
+  // A plane whose face in the envelope is less than hidden_max_fraction of
+  // its patch was seen where the others' extensions lie below it: it is no
+  // part of their roof but a neighbouring roof at another height (terraced
+  // houses of different heights join into one hypothesis at the party
+  // wall). It goes on as a hypothesis of its own, like the pieces of a
+  // split at a valley, before any face is dropped; false: it is dropped
+  // like a sliver.
+  bool split_hidden = true;
+  double hidden_max_fraction = 0.25;
   // Buildings whose outline is smaller than this are logged and dropped.
   double min_footprint_m2 = 5.0;
   // With footprints, a plane over one needs only these height and line

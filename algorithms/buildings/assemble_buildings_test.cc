@@ -156,16 +156,37 @@ TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {
   ExpectAllValid(r);
 }
 
-TEST(AssembleBuildings, AHypothesisThatFallsApartIsBuiltPieceByPiece) {
-  // Two flat garages 7 m apart, 0.3 m different in height, joined only
-  // through a false plane over the gap between them (a hedge). Once that
-  // plane is dropped, one envelope over both would let the lower roof
-  // cover the higher garage and the gap.
+TEST(AssembleBuildings, ARoofHiddenByALowerNeighbourGoesOnAsABuildingOfItsOwn) {
+  // Two flat garages 7 m apart, 0.3 m different in height, joined through
+  // a carport roof between them at a height in between. Over the hull of
+  // all three the lowest garage's plane lies below the others, which were
+  // seen where it is only extrapolated: each goes on as a building of its
+  // own.
   std::vector<RoofPlaneHypothesis> in = {
       Hyp(Eigen::Vector4d(0, 0, 1, -3.0), {{0, 0}, {6, 0}, {6, 8}, {0, 8}}, 2),
       Hyp(Eigen::Vector4d(0, 0, 1, -3.3), {{13, 0}, {19, 0}, {19, 8}, {13, 8}}, 2),
       Hyp(Eigen::Vector4d(0, 0, 1, -3.15), {{6.5, 3}, {12.5, 3}, {12.5, 5}, {6.5, 5}}, 0.5)};
-  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  AssemblyResult r = AssembleBuildings(in, Flat(0));
+  EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
+  std::vector<std::pair<double, double>> got;  // height, footprint
+  for (const Building& b : r.model.buildings)
+    got.emplace_back(b.measured_height, b.double_attributes.at("footprint_m2"));
+  std::sort(got.begin(), got.end());
+  ASSERT_EQ(got.size(), 3u);
+  const double want[3][2] = {{3.0, 48}, {3.15, 12}, {3.3, 48}};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(got[k].first, want[k][0], 1e-9);
+    EXPECT_NEAR(got[k].second, want[k][1], 1e-6);
+  }
+  ExpectAllValid(r);
+
+  // Without the split the hidden planes are dropped like slivers, the
+  // weakest first: the carport roof. The hypothesis then falls apart and is
+  // built piece by piece; one envelope over both garages would let the
+  // lower roof cover the higher garage and the gap.
+  AssemblyOptions o;
+  o.split_hidden = false;
+  r = AssembleBuildings(in, Flat(0), o);
   ASSERT_EQ(r.model.buildings.size(), 2u);
   ASSERT_EQ(r.rejected.size(), 1u);
   EXPECT_NE(r.rejected[0].find("plane 2"), std::string::npos) << r.rejected[0];
@@ -180,12 +201,11 @@ TEST(AssembleBuildings, AHypothesisThatFallsApartIsBuiltPieceByPiece) {
   ExpectAllValid(r);
 }
 
-TEST(AssembleBuildings, AFaceHiddenByAnUnsupportedPlaneOutlivesIt) {
+TEST(AssembleBuildings, AHigherTerraceRowHiddenByTheHouseBesideItIsKept) {
   // A terrace: a 5 m house and a 20 m row joined at a party wall, the
   // row's roof 0.3 m higher. Over the hull of both, the house's planes lie
-  // below the row's everywhere, yet are seen over less than a third of it:
-  // they go first, and the row keeps its faces instead of losing them for
-  // being hidden (which would then leave no roof at all).
+  // below the row's everywhere: the row's gable, seen but hidden, goes on
+  // as a building of its own, and the house keeps its faces.
   std::vector<RoofPlaneHypothesis> in;
   const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
   for (double az : {-90.0, 90.0}) {
@@ -194,11 +214,30 @@ TEST(AssembleBuildings, AFaceHiddenByAnUnsupportedPlaneOutlivesIt) {
     in.push_back(Hyp(SlopedPlane({5.5, 4, ridge_z + 0.3}, 30, az),
                      {{5.5, y0}, {25, y0}, {25, y1}, {5.5, y1}}));
   }
-  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  AssemblyResult r = AssembleBuildings(in, Flat(0));
+  EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  std::vector<std::pair<double, double>> got;  // height, footprint
+  for (const Building& b : r.model.buildings) {
+    EXPECT_EQ(b.roof_type, roof_type::kGabled) << b.id;
+    got.emplace_back(b.measured_height, b.double_attributes.at("footprint_m2"));
+  }
+  std::sort(got.begin(), got.end());
+  EXPECT_NEAR(got[0].first, ridge_z, 1e-9);
+  EXPECT_NEAR(got[0].second, 40, 1e-6);
+  EXPECT_NEAR(got[1].first, ridge_z + 0.3, 1e-9);
+  EXPECT_NEAR(got[1].second, 156, 1e-6);
+  ExpectAllValid(r);
+
+  // Without the split, the house's planes, seen over less than a third of
+  // their faces, go first, and the row keeps its faces instead of losing
+  // them for being hidden (which would then leave no roof at all).
+  AssemblyOptions o;
+  o.split_hidden = false;
+  r = AssembleBuildings(in, Flat(0), o);
   ASSERT_EQ(r.model.buildings.size(), 1u);
-  const Building& b = r.model.buildings[0];
-  EXPECT_EQ(b.roof_type, roof_type::kGabled);
-  EXPECT_NEAR(b.measured_height, ridge_z + 0.3, 1e-9);
+  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  EXPECT_NEAR(r.model.buildings[0].measured_height, ridge_z + 0.3, 1e-9);
   ASSERT_EQ(r.rejected.size(), 2u);
   for (const std::string& why : r.rejected)
     EXPECT_NE(why.find("where the images saw the plane"), std::string::npos) << why;
