@@ -174,7 +174,7 @@ namespace {
 std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& o,
                                  std::vector<std::string>* rejected) {
-  std::vector<int> keep;
+  std::vector<int> keep, attached;
   for (int i = 0; i < static_cast<int>(planes.size()); ++i) {
     const RoofPlaneHypothesis& p = planes[i];
     const std::string name = p.id.empty() ? StrFormat("plane %d", i) : p.id;
@@ -184,7 +184,8 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
       rejected->push_back(name + ": degenerate plane or patch");
       continue;
     }
-    if (p.longest_line_m < o.min_line_length_m) {
+    const bool short_lines = p.longest_line_m < o.min_line_length_m;
+    if (short_lines && p.longest_line_m < o.min_attached_line_length_m) {
       rejected->push_back(name + StrFormat(": longest supporting line %.2f m < %.2f m",
                                            p.longest_line_m, o.min_line_length_m));
       continue;
@@ -207,8 +208,37 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                           StrFormat(": %.2f m above the ground < %.2f m", h, o.min_height_m));
       continue;
     }
+    if (short_lines) {
+      attached.push_back(i);
+      continue;
+    }
     keep.push_back(i);
   }
+  // Short-lined planes that meet a plausible plane: dormers, hip ends,
+  // porches. A hedge, a car or a tree crown does not join a roof.
+  const size_t n_keep = keep.size();
+  for (int i : attached) {
+    const RoofPlaneHypothesis& p = planes[i];
+    bool joins = false;
+    const Ring2 grown = GrowConvex(p.patch, o.adjacency_gap_m);
+    for (size_t k = 0; k < n_keep && !joins; ++k) {
+      const RoofPlaneHypothesis& q = planes[keep[k]];
+      if (ConvexDistance(p.patch, q.patch) > o.adjacency_gap_m) continue;
+      const Ring2 meet = IntersectConvex(grown, GrowConvex(q.patch, o.adjacency_gap_m));
+      if (meet.empty()) continue;
+      const Eigen::Vector2d c = Centroid(meet);
+      joins = std::abs(PlaneZ(p.plane, c) - PlaneZ(q.plane, c)) <= o.max_step_m;
+    }
+    if (joins) {
+      keep.push_back(i);
+    } else {
+      rejected->push_back((p.id.empty() ? StrFormat("plane %d", i) : p.id) +
+                          StrFormat(": longest supporting line %.2f m < %.2f m, and it joins no "
+                                    "roof plane",
+                                    p.longest_line_m, o.min_line_length_m));
+    }
+  }
+  std::sort(keep.begin(), keep.end());
   return keep;
 }
 

@@ -142,6 +142,29 @@ TEST(AssembleBuildings, EveryRejectionHasAReason) {
   EXPECT_NE(r.rejected[4].find("footprint"), std::string::npos) << r.rejected[4];
 }
 
+TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
+  // A porch roof (3 x 2 m, flat at the eave height, lines of 2.5 m) at the
+  // gable's south eave: too short-lined alone, a roof part beside it.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  RoofPlaneHypothesis porch = Hyp(Eigen::Vector4d(0, 0, 1, -6), {{3, -2}, {6, -2}, {6, 0}, {3, 0}});
+  porch.longest_line_m = 2.5;
+  in.push_back(porch);
+  AssemblyResult r = AssembleBuildings(in, Flat(0));
+  EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
+  double porch_area = 0;
+  for (const Building& b : r.model.buildings)
+    if (std::abs(b.measured_height - 6) < 1e-9) porch_area = b.double_attributes.at("footprint_m2");
+  EXPECT_NEAR(porch_area, 6, 1e-6);
+  ExpectAllValid(r);
+  // The same roof 5 m away from the house is a hedge or a car.
+  in.back().patch = ConvexHull({{3, -7}, {6, -7}, {6, -5}, {3, -5}});
+  r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.rejected.size(), 1u);
+  EXPECT_NE(r.rejected[0].find("joins no roof plane"), std::string::npos) << r.rejected[0];
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+}
+
 TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {
   // A false steep plane seen only over a small patch at the gable's corner
   // would, in a plain lower envelope, slice off most of the roof.
