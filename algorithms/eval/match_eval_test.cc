@@ -5,12 +5,7 @@
 namespace roofsweep::eval {
 namespace {
 
-Segment2D Seg(double x0, double y0, double x1, double y1) {
-  Segment2D s;
-  s.p0 = {x0, y0};
-  s.p1 = {x1, y1};
-  return s;
-}
+Segment2D Seg(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y1}}; }
 
 // Two views; annotated lines 0 and 1 in both, plus line 2 in view 0 only.
 // Rows: line 0 <-> 0, line 1 <-> 1, line 2 unmarked in view 1.

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "algorithms/geometry/rotation.h"
+#include "algorithms/geometry/test_blocks.h"
 
 namespace roofsweep {
 namespace {
@@ -12,23 +13,9 @@ namespace {
 // A strip of nadir images 1000 px wide, f = 1000 px, 500 m above ground:
 // GSD 0.5 m, footprint 500 m; centres 200 m apart => 60% forward overlap.
 Block NadirStrip(int n, double spacing) {
-  Block b;
-  Camera c;
-  c.id = "c";
-  c.width = c.height = 1000;
-  c.fx = c.fy = 1000;
-  c.cx = c.cy = 500;
-  b.cameras.push_back(c);
-  b.ground.height = 0;
-  for (int i = 0; i < n; ++i) {
-    View v;
-    v.name = "img" + std::to_string(i);
-    v.camera = 0;
-    v.pose.R = PatbToCv(OpkToRotation(0, 0, 0));
-    v.pose.C = {i * spacing, 0, 500};
-    b.views.push_back(v);
-  }
-  return b;
+  std::vector<Eigen::Vector3d> centres;
+  for (int i = 0; i < n; ++i) centres.emplace_back(i * spacing, 0, 500);
+  return NadirTestBlock(centres, "img");
 }
 
 TEST(BlockOverview, NadirStripGsdAndOverlap) {

@@ -4,33 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include "algorithms/geometry/test_blocks.h"
 #include "algorithms/matching/epipolar.h"
 
 namespace roofsweep {
 namespace {
 
-// Three nadir views in one strip along x, 100 m above z = 0, f = 1000 px,
-// 1000 x 1000 px (10 cm GSD): every epipolar line runs along x.
-Block StripBlock() {
-  Block b;
-  Camera c;
-  c.id = "c";
-  c.width = c.height = 1000;
-  c.fx = c.fy = 1000;
-  c.cx = c.cy = 500;
-  b.cameras.push_back(c);
-  for (int k = 0; k < 3; ++k) {
-    View v;
-    v.name = "v" + std::to_string(k);
-    v.camera = 0;
-    v.pose.R = Eigen::Vector3d(1, -1, -1).asDiagonal();
-    v.pose.C = Eigen::Vector3d(30.0 * (k - 1), 0, 100);
-    b.views.push_back(v);
-  }
-  b.ground.height = 0;
-  b.max_building_height = 20;
-  return b;
-}
+// Three nadir views in one strip along x, 100 m above z = 0 (10 cm GSD):
+// every epipolar line runs along x.
+Block StripBlock() { return NadirTestBlock({{-30, 0, 100}, {0, 0, 100}, {30, 0, 100}}); }
 
 const Eigen::Vector3d kEaveA(-8, -6, 10), kEaveB(8, -6, 10);
 const Eigen::Vector3d kRidgeA(-8, 0, 14), kRidgeB(8, 0, 14);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <random>
 
+#include "algorithms/geometry/test_blocks.h"
 #include "algorithms/matching/assignment.h"
 #include "algorithms/matching/chromatic_test.h"
 #include "algorithms/matching/correlation.h"
@@ -16,26 +17,9 @@
 namespace roofsweep {
 namespace {
 
-// Nadir cameras 100 m above z = 0, f = 1000 px, 1000 x 1000 px (10 cm GSD).
+// Two nadir views 100 m above z = 0 (10 cm GSD), `baseline` apart along x.
 Block TwoViewBlock(double baseline = 30) {
-  Block b;
-  Camera c;
-  c.id = "c";
-  c.width = c.height = 1000;
-  c.fx = c.fy = 1000;
-  c.cx = c.cy = 500;
-  b.cameras.push_back(c);
-  for (int k = 0; k < 2; ++k) {
-    View v;
-    v.name = "v" + std::to_string(k);
-    v.camera = 0;
-    v.pose.R = Eigen::Vector3d(1, -1, -1).asDiagonal();
-    v.pose.C = Eigen::Vector3d(k * baseline - baseline / 2, 0, 100);
-    b.views.push_back(v);
-  }
-  b.ground.height = 0;
-  b.max_building_height = 20;
-  return b;
+  return NadirTestBlock({{-baseline / 2, 0, 100}, {baseline / 2, 0, 100}});
 }
 
 Segment2D ProjectSeg(const Block& b, int v, const Eigen::Vector3d& A, const Eigen::Vector3d& B) {
