@@ -170,6 +170,19 @@ int ClassifyRoofType(const std::vector<Polygon3>& faces) {
 
 namespace {
 
+// Two patches belong to one roof when they come within adjacency_gap_m of
+// each other in plan and their planes meet there (heights within
+// max_step_m where their grown patches overlap). `grown_*`: the patches
+// grown by adjacency_gap_m.
+bool PlanesMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p, const RoofPlaneHypothesis& q,
+                const Ring2& grown_q, const AssemblyOptions& o) {
+  if (ConvexDistance(p.patch, q.patch) > o.adjacency_gap_m) return false;
+  const Ring2 meet = IntersectConvex(grown_p, grown_q);
+  if (meet.empty()) return false;
+  const Eigen::Vector2d c = Centroid(meet);
+  return std::abs(PlaneZ(p.plane, c) - PlaneZ(q.plane, c)) <= o.max_step_m;
+}
+
 // Plausible roof planes of the input, with the reasons for the others.
 std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& o,
@@ -223,11 +236,7 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
     const Ring2 grown = GrowConvex(p.patch, o.adjacency_gap_m);
     for (size_t k = 0; k < n_keep && !joins; ++k) {
       const RoofPlaneHypothesis& q = planes[keep[k]];
-      if (ConvexDistance(p.patch, q.patch) > o.adjacency_gap_m) continue;
-      const Ring2 meet = IntersectConvex(grown, GrowConvex(q.patch, o.adjacency_gap_m));
-      if (meet.empty()) continue;
-      const Eigen::Vector2d c = Centroid(meet);
-      joins = std::abs(PlaneZ(p.plane, c) - PlaneZ(q.plane, c)) <= o.max_step_m;
+      joins = PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o);
     }
     if (joins) {
       keep.push_back(i);
@@ -591,12 +600,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       if (footprint_of[i] != footprint_of[j]) continue;
-      if (ConvexDistance(planes[i].patch, planes[j].patch) > o.adjacency_gap_m) continue;
-      const Ring2 meet = IntersectConvex(grown[i], grown[j]);
-      if (meet.empty()) continue;
-      const Eigen::Vector2d c = Centroid(meet);
-      if (std::abs(PlaneZ(planes[i].plane, c) - PlaneZ(planes[j].plane, c)) > o.max_step_m)
-        continue;
+      if (!PlanesMeet(planes[i], grown[i], planes[j], grown[j], o)) continue;
       uf.Join(i, j);
       // A ridge or hip (each plane lies below the other's extension over
       // its own patch) keeps both planes in one convex part; a valley

@@ -4,7 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <memory>
+#include <optional>
 #include <set>
 
 #include "algorithms/matching/epipolar.h"
@@ -134,8 +135,10 @@ JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
       const Segment2D& t = views[k].ideal[sup];
       const double u0 = (t.p0 - *a).dot(d), u1 = (t.p1 - *a).dot(d);
       if (std::abs(std::min(u0, u1)) <= o.junction_px &&
-          std::abs(std::max(u0, u1) - len) <= o.junction_px)
+          std::abs(std::max(u0, u1) - len) <= o.junction_px) {
         h.ok = true;
+        break;
+      }
     }
   });
   for (size_t n = 0; n < hyps.size(); ++n) {

@@ -27,26 +27,14 @@ bool AffineWindow::Sample(const cv::Mat& image, float* values, double* sum) cons
         Eigen::Vector2d(origin_ + n * dy_ + n * dx_)})
     if (!(c.x() >= 0 && c.y() >= 0 && c.x() <= image.cols - 1 && c.y() <= image.rows - 1))
       return false;
-  const int w = 2 * r_ + 1, max_x = image.cols - 2, max_y = image.rows - 2;
-  const size_t step = image.step1();
-  const float* data = image.ptr<float>(0);
-  double total = 0;
-  for (int iy = 0, k = 0; iy < w; ++iy) {
-    const double row_x = origin_.x() + iy * dy_.x(), row_y = origin_.y() + iy * dy_.y();
-    for (int ix = 0; ix < w; ++ix, ++k) {
-      const double x = row_x + ix * dx_.x(), y = row_y + ix * dx_.y();
-      // Inside the corners, so x, y >= 0 up to rounding: the cast is the
-      // floor, and only the last column and row need clamping.
-      const int x0 = std::min(static_cast<int>(x), max_x),
-                y0 = std::min(static_cast<int>(y), max_y);
-      const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
-      const float* r0 = data + y0 * step + x0;
-      const float* r1 = r0 + step;
-      values[k] = (1 - fy) * ((1 - fx) * r0[0] + fx * r0[1]) + fy * ((1 - fx) * r1[0] + fx * r1[1]);
-      total += values[k];
+  for (int iy = 0, k = 0; iy <= 2 * r_; ++iy) {
+    const Eigen::Vector2d row = origin_ + iy * dy_;
+    for (int ix = 0; ix <= 2 * r_; ++ix, ++k) {
+      const Eigen::Vector2d at = row + ix * dx_;
+      values[k] = SampleBilinearInside(image, at.x(), at.y());
+      *sum += values[k];
     }
   }
-  *sum = total;
   return true;
 }
 

@@ -1,6 +1,5 @@
 #include "io/orientation/vgg_annotations.h"
 
-#include <algorithm>
 #include <filesystem>
 
 #include "algorithms/core/error.h"
@@ -10,32 +9,13 @@
 namespace fs = std::filesystem;
 
 namespace roofsweep::orientation {
-namespace {
-
-std::string AtLine(const std::string& path, int line, const std::string& what) {
-  return path + ":" + std::to_string(line) + ": " + what;
-}
-
-std::vector<fs::path> FilesEndingWith(const std::string& folder, const std::string& suffix) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(folder, ec);
-       !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-    if (it->is_regular_file(ec) && EndsWith(it->path().filename().string(), suffix))
-      out.push_back(it->path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-}  // namespace
 
 VggLineAnnotations ReadVggLineAnnotations(const std::string& folder) {
   VggLineAnnotations a;
-  const auto line_files = FilesEndingWith(folder, ".lines");
+  const auto line_files = VggFilesEndingWith(folder, ".lines");
   if (line_files.empty()) throw Error(folder + ": no *.lines annotation files below it");
-  for (const fs::path& f : line_files) {
-    const std::string path = f.string();
-    a.views.push_back(f.stem().string());
+  for (const std::string& path : line_files) {
+    a.views.push_back(fs::path(path).stem().string());
     Segments2D segs;
     for (const TextLine& l : ReadTextLines(path)) {
       if (Trim(l.text).empty()) continue;
@@ -55,9 +35,9 @@ VggLineAnnotations ReadVggLineAnnotations(const std::string& folder) {
     }
     a.lines.push_back(std::move(segs));
   }
-  const auto nview = FilesEndingWith(folder, "nview-lines");
+  const auto nview = VggFilesEndingWith(folder, "nview-lines");
   if (nview.empty()) throw Error(folder + ": no nview-lines file below it");
-  const std::string npath = nview.front().string();
+  const std::string& npath = nview.front();
   for (const TextLine& l : ReadTextLines(npath)) {
     const auto t = SplitWhitespace(l.text);
     if (t.empty()) continue;
@@ -76,9 +56,9 @@ VggLineAnnotations ReadVggLineAnnotations(const std::string& folder) {
     }
     a.rows.push_back(std::move(row));
   }
-  const auto l3d = FilesEndingWith(folder, "l3d");
+  const auto l3d = VggFilesEndingWith(folder, "l3d");
   if (!l3d.empty()) {
-    const std::string path = l3d.front().string();
+    const std::string& path = l3d.front();
     const double z = VggWorldIsMirrored(folder) ? -1 : 1;
     for (const TextLine& l : ReadTextLines(path)) {
       if (Trim(l.text).empty()) continue;

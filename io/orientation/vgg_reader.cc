@@ -19,12 +19,7 @@ namespace {
 
 std::vector<fs::path> FindProjectionFiles(const std::string& folder) {
   std::vector<fs::path> out;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(folder, ec);
-       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (it->is_regular_file(ec) && it->path().extension() == ".P") out.push_back(it->path());
-  }
-  std::sort(out.begin(), out.end());
+  for (const std::string& f : VggFilesEndingWith(folder, ".P")) out.emplace_back(f);
   return out;
 }
 
@@ -52,21 +47,17 @@ Matrix34d ReadProjection(const std::string& path) {
 // used only to tell which side of each camera the scene is on.
 std::vector<Eigen::Vector3d> ScenePoints(const std::string& folder) {
   std::vector<Eigen::Vector3d> points;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(folder, ec);
-       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    const bool p3d = EndsWith(name, "p3d"), l3d = EndsWith(name, "l3d");
-    if (!it->is_regular_file(ec) || (!p3d && !l3d)) continue;
-    for (const auto& line : ReadTextLines(it->path().string())) {
-      const auto t = SplitWhitespace(line.text);
-      if (t.size() != (p3d ? 3u : 6u)) continue;
-      for (size_t k = 0; k < t.size(); k += 3) {
-        points.emplace_back(ParseNumber(t[k], it->path().string(), line.number, "point"),
-                            ParseNumber(t[k + 1], it->path().string(), line.number, "point"),
-                            ParseNumber(t[k + 2], it->path().string(), line.number, "point"));
+  for (const char* kind : {"p3d", "l3d"}) {
+    const size_t per_row = kind[0] == 'p' ? 3 : 6;
+    for (const std::string& path : VggFilesEndingWith(folder, kind))
+      for (const auto& line : ReadTextLines(path)) {
+        const auto t = SplitWhitespace(line.text);
+        if (t.size() != per_row) continue;
+        for (size_t k = 0; k < t.size(); k += 3)
+          points.emplace_back(ParseNumber(t[k], path, line.number, "point"),
+                              ParseNumber(t[k + 1], path, line.number, "point"),
+                              ParseNumber(t[k + 2], path, line.number, "point"));
       }
-    }
   }
   return points;
 }
@@ -88,6 +79,17 @@ int Handedness(const Matrix34d& P, const std::vector<Eigen::Vector3d>& points) {
 }
 
 }  // namespace
+
+std::vector<std::string> VggFilesEndingWith(const std::string& folder, const std::string& suffix) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(folder, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+    if (it->is_regular_file(ec) && EndsWith(it->path().filename().string(), suffix))
+      out.push_back(it->path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
 
 bool VggWorldIsMirrored(const std::string& folder) {
   const auto files = FindProjectionFiles(folder);

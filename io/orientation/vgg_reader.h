@@ -32,6 +32,10 @@ BlockManifest ReadVgg(const std::vector<std::string>& sources, const ImportOptio
 // the cameras only in a mirrored world. Throws when the views disagree.
 bool VggWorldIsMirrored(const std::string& folder);
 
+// The regular files below `folder` (recursively) whose name ends with
+// `suffix`, sorted: a set's P matrices, .lines, nview-lines, p3d and l3d.
+std::vector<std::string> VggFilesEndingWith(const std::string& folder, const std::string& suffix);
+
 // True when `folder` holds a *.P file somewhere below it.
 bool LooksLikeVggSet(const std::string& folder);
 
