@@ -35,11 +35,30 @@ struct Strip {
   std::vector<char> valid;
 };
 
+// Per column u, the epipolar direction at p(u) scaled to unit distance
+// across the segment; zero where it runs nearly along the segment (no
+// usable area). The same for every scale tried, so computed once per side.
+std::vector<Eigen::Vector2d> AcrossSteps(const std::vector<Eigen::Vector2d>& pts,
+                                         const Eigen::Vector2d& normal,
+                                         const Eigen::Vector3d& epipole) {
+  std::vector<Eigen::Vector2d> steps(pts.size(), Eigen::Vector2d::Zero());
+  for (size_t u = 0; u < pts.size(); ++u) {
+    Eigen::Vector2d d = EpipolarDirection(epipole, pts[u]);
+    double c = d.dot(normal);
+    if (c < 0) {
+      d = -d;
+      c = -c;
+    }
+    if (c >= 0.2) steps[u] = d / c;
+  }
+  return steps;
+}
+
 // Samples the parallelogram of one side: column u at point p(u) on the
 // segment, row m at perpendicular distance offset + 0.5 + m, stepping along
 // the epipolar direction. Columns stop at another contour.
-void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts, int seg_id,
-                const Eigen::Vector2d& normal, const Eigen::Vector3d& epipole, double scale,
+void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
+                const std::vector<Eigen::Vector2d>& across, int seg_id, double scale,
                 const SideColour& attr, const MatchOptions& o, Strip* st) {
   st->cols = static_cast<int>(pts.size());
   st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
@@ -49,14 +68,8 @@ void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts, 
   const double lo = attr.l_location - o.l_outlier_sigmas * attr.l_scale;
   const double hi = attr.l_location + o.l_outlier_sigmas * attr.l_scale;
   for (int u = 0; u < st->cols; ++u) {
-    Eigen::Vector2d d = EpipolarDirection(epipole, pts[u]);
-    double c = d.dot(normal);
-    if (c < 0) {
-      d = -d;
-      c = -c;
-    }
-    if (c < 0.2) continue;  // nearly along the segment: no usable area
-    const Eigen::Vector2d step = d / c * scale;
+    if (across[u].x() == 0 && across[u].y() == 0) continue;
+    const Eigen::Vector2d step = across[u] * scale;
     for (int m = 0; m < st->rows; ++m) {
       const Eigen::Vector2d p = v.ToImage(pts[u] + (o.region_offset + 0.5 + m) * step);
       if (!v.Inside(p)) break;
@@ -104,7 +117,8 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
   const SideColour& ai = vi.sides[h.si][side];
   const SideColour& aj = vj.sides[h.sj][(side_j == side_i) ? side : 1 - side];
   Strip a, b;
-  SampleSide(vi, pi, h.si, ni, g.e_i, 1.0, ai, o, &a);
+  SampleSide(vi, pi, AcrossSteps(pi, ni, g.e_i), h.si, 1.0, ai, o, &a);
+  const std::vector<Eigen::Vector2d> across_j = AcrossSteps(pj, nj, g.e_j);
   const int half = std::max(1, static_cast<int>(std::lround(o.ncc_window / o.sample_step / 2)));
   std::vector<float> x1, x2, y1, y2;
   double best = -9;
@@ -113,7 +127,7 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
     // Geometric series from 1/max_scale to max_scale.
     const double e = steps == 1 ? 0.0 : -1.0 + 2.0 * k / (steps - 1);
     const double scale = std::pow(o.max_scale, e);
-    SampleSide(vj, pj, h.sj, nj, g.e_j, scale, aj, o, &b);
+    SampleSide(vj, pj, across_j, h.sj, scale, aj, o, &b);
     double sum = 0;
     int windows = 0;
     for (int u = 0; u < a.cols; u += std::max(1, half)) {

@@ -1,5 +1,7 @@
 #include "algorithms/matching/view_features.h"
 
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -11,14 +13,12 @@
 
 namespace roofsweep {
 
-Eigen::Vector2d ViewFeatures::ToImage(const Eigen::Vector2d& ideal_px) const {
-  if (!camera->HasDistortion()) return ideal_px;
+Eigen::Vector2d ViewFeatures::Distorted(const Eigen::Vector2d& ideal_px) const {
   const Eigen::Vector3d n = camera->K().inverse() * ideal_px.homogeneous();
   return camera->NormalizedToPixel(n.hnormalized());
 }
 
-Eigen::Vector2d ViewFeatures::ToIdeal(const Eigen::Vector2d& image_px) const {
-  if (!camera->HasDistortion()) return image_px;
+Eigen::Vector2d ViewFeatures::Undistorted(const Eigen::Vector2d& image_px) const {
   const Eigen::Vector2d n = camera->PixelToNormalized(image_px);
   return (camera->K() * n.homogeneous()).hnormalized();
 }
@@ -131,6 +131,7 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
   f.view = view;
   const View& v = block.views.at(view);
   f.camera = &block.CameraOf(v);
+  f.distorted = f.camera->HasDistortion();
   f.pose = v.pose;
   f.P = ProjectionMatrix(*f.camera, v.pose);
   cv::Mat rgb;
@@ -139,18 +140,29 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
   } else {
     rgb = image;
   }
-  cv::Mat clipped;
-  cv::min(cv::max(rgb, 0.0), 1.0, clipped);
-  cv::cvtColor(clipped, f.lab, cv::COLOR_RGB2Lab);
+  // In row bands: no full-size clipped copy (each 48 MB temporary of a
+  // 2048² view costs more in page faults than in arithmetic).
+  f.lab.create(rgb.size(), CV_32FC3);
+  constexpr int kBand = 64;
+  const int bands = (rgb.rows + kBand - 1) / kBand;
+  std::vector<float> chroma(bands, 0.f);  // max |a*|, |b*| per band
+  tbb::parallel_for(0, bands, [&](int b) {
+    const cv::Range rows(b * kBand, std::min(rgb.rows, (b + 1) * kBand));
+    cv::Mat clipped;
+    cv::min(cv::max(rgb.rowRange(rows), 0.0), 1.0, clipped);
+    cv::Mat lab = f.lab.rowRange(rows);
+    cv::cvtColor(clipped, lab, cv::COLOR_RGB2Lab);
+    for (int y = 0; y < lab.rows; ++y) {
+      const cv::Vec3f* px = lab.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < lab.cols; ++x)
+        chroma[b] = std::max({chroma[b], std::abs(px[x][1]), std::abs(px[x][2])});
+    }
+  });
+  f.grey = *std::max_element(chroma.begin(), chroma.end()) < 0.5f;
   {
-    cv::Mat ch[3];
-    cv::split(f.lab, ch);
-    double amin, amax, bmin, bmax;
-    cv::minMaxLoc(ch[1], &amin, &amax);
-    cv::minMaxLoc(ch[2], &bmin, &bmax);
-    f.grey = std::max({std::abs(amin), amax, std::abs(bmin), bmax}) < 0.5;
-    cv::Mat gx, gy, l;
-    cv::GaussianBlur(ch[0], l, cv::Size(0, 0), 1.0);
+    cv::Mat l0, gx, gy, l;
+    cv::extractChannel(f.lab, l0, 0);
+    cv::GaussianBlur(l0, l, cv::Size(0, 0), 1.0);
     cv::Sobel(l, gx, CV_32F, 1, 0, 3, 1.0 / 800.0);  // 1/8 Sobel norm, 1/100 L* range
     cv::Sobel(l, gy, CV_32F, 0, 1, 3, 1.0 / 800.0);
     cv::magnitude(gx, gy, f.gradient);

@@ -37,18 +37,27 @@ struct ViewFeatures {
   cv::Mat gradient;                              // CV_32F, |grad| of L*/100 per px
   cv::Mat labels;                                // CV_32S, segment id or -1
   bool grey = false;                             // no chroma: correlation on L* instead of a*, b*
+  bool distorted = false;                        // camera->HasDistortion(), asked per sample
   Segments2D segments;                           // image pixel coordinates, as detected
   Segments2D ideal;                              // the same in ideal pixel coordinates
   std::unique_ptr<SegmentIndex> index;           // over `ideal`
   std::vector<std::array<SideColour, 2>> sides;  // [left, right] per segment
 
   // Ideal pixel <-> image pixel (identity without distortion).
-  Eigen::Vector2d ToImage(const Eigen::Vector2d& ideal_px) const;
-  Eigen::Vector2d ToIdeal(const Eigen::Vector2d& image_px) const;
+  Eigen::Vector2d ToImage(const Eigen::Vector2d& ideal_px) const {
+    return distorted ? Distorted(ideal_px) : ideal_px;
+  }
+  Eigen::Vector2d ToIdeal(const Eigen::Vector2d& image_px) const {
+    return distorted ? Undistorted(image_px) : image_px;
+  }
   bool Inside(const Eigen::Vector2d& image_px) const {
     return image_px.x() >= 0 && image_px.y() >= 0 && image_px.x() < lab.cols &&
            image_px.y() < lab.rows;
   }
+
+ private:
+  Eigen::Vector2d Distorted(const Eigen::Vector2d& ideal_px) const;
+  Eigen::Vector2d Undistorted(const Eigen::Vector2d& image_px) const;
 };
 
 // Builds the features of one view from its RGB image (CV_32FC3 in [0, 1],
