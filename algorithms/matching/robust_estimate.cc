@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
-#include <random>
 
 namespace roofsweep {
 namespace {
@@ -91,33 +91,100 @@ Robust1D RobustMcd1D(std::vector<double> v) {
   return r;
 }
 
+namespace {
+
+// Mean and scatter of the points whose index `take` marks, in index order
+// (a fixed summation order: the result does not depend on how the subset
+// was found).
+MeanCov EstimateMarked(const std::vector<Eigen::Vector2d>& pts, const std::vector<char>& take) {
+  MeanCov r{Eigen::Vector2d::Zero(), Eigen::Matrix2d::Zero()};
+  int m = 0;
+  const int n = static_cast<int>(pts.size());
+  for (int i = 0; i < n; ++i)
+    if (take[i]) {
+      r.mean += pts[i];
+      ++m;
+    }
+  r.mean /= static_cast<double>(m);
+  double sxx = 0, sxy = 0, syy = 0;
+  for (int i = 0; i < n; ++i)
+    if (take[i]) {
+      const double dx = pts[i].x() - r.mean.x(), dy = pts[i].y() - r.mean.y();
+      sxx += dx * dx;
+      sxy += dx * dy;
+      syy += dy * dy;
+    }
+  const double f = 1.0 / std::max(1.0, static_cast<double>(m) - 1.0);
+  r.cov << sxx * f, sxy * f, sxy * f, syy * f;
+  return r;
+}
+
+// Squared Mahalanobis distances under `mc` (2x2 inverse written out: this
+// is the inner loop of every C-step).
+void Distances(const std::vector<Eigen::Vector2d>& pts, const MeanCov& mc,
+               std::vector<double>* d2) {
+  const double det = mc.cov(0, 0) * mc.cov(1, 1) - mc.cov(0, 1) * mc.cov(1, 0);
+  const double a = mc.cov(1, 1) / det, b = -mc.cov(0, 1) / det, c = mc.cov(0, 0) / det;
+  const int n = static_cast<int>(pts.size());
+  for (int i = 0; i < n; ++i) {
+    const double dx = pts[i].x() - mc.mean.x(), dy = pts[i].y() - mc.mean.y();
+    (*d2)[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
+  }
+}
+
+// Marks the h points of smallest distance, ties going to the lower index.
+void MarkSmallest(const std::vector<double>& d2, int h, std::vector<double>* scratch,
+                  std::vector<char>* take) {
+  *scratch = d2;
+  std::nth_element(scratch->begin(), scratch->begin() + (h - 1), scratch->end());
+  const double t = (*scratch)[h - 1];
+  const int n = static_cast<int>(d2.size());
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    (*take)[i] = d2[i] < t;
+    m += (*take)[i];
+  }
+  for (int i = 0; i < n && m < h; ++i)
+    if (d2[i] == t) {
+      (*take)[i] = 1;
+      ++m;
+    }
+}
+
+// Starts refined to convergence after their first two C-steps.
+constexpr size_t kConverged = 2;
+
+// splitmix64: the starts only need a cheap, well-mixed, seeded choice
+// (std::mt19937's 2.5 kB state cost more to seed than a C-step).
+uint64_t SplitMix(uint64_t* state) {
+  uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
 Robust2D RobustMcd2D(const std::vector<Eigen::Vector2d>& pts, unsigned seed, int starts) {
   Robust2D out;
   const int n = static_cast<int>(pts.size());
   if (n < 5) return out;
   const int h = (n + 3) / 2;  // (n + p + 1) / 2 with p = 2
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> pick(0, n - 1);
-  std::vector<double> d2(n);
-  std::vector<int> order(n);
+  uint64_t rng = seed;
+  std::vector<double> d2(n), scratch;
+  std::vector<char> take(n);
   double best_det = 1e300;
   MeanCov best{};
 
-  auto c_steps = [&](MeanCov mc) {
+  // C-steps from `mc`, at most `steps`; the scatter's determinant never
+  // increases, and equal determinants mean convergence.
+  auto c_steps = [&](MeanCov mc, int steps) {
     double det = 1e300;
-    for (int it = 0; it < 20; ++it) {
+    for (int it = 0; it < steps; ++it) {
       Regularise(&mc.cov);
-      const Eigen::Matrix2d inv = mc.cov.inverse();
-      for (int i = 0; i < n; ++i) {
-        const Eigen::Vector2d d = pts[i] - mc.mean;
-        d2[i] = d.dot(inv * d);
-      }
-      std::iota(order.begin(), order.end(), 0);
-      std::nth_element(order.begin(), order.begin() + h, order.end(),
-                       [&](int a, int b) { return d2[a] < d2[b] || (d2[a] == d2[b] && a < b); });
-      order.resize(h);
-      MeanCov next = Estimate(pts, order);
-      order.resize(n);
+      Distances(pts, mc, &d2);
+      MarkSmallest(d2, h, &scratch, &take);
+      const MeanCov next = EstimateMarked(pts, take);
       const double nd = next.cov.determinant();
       mc = next;
       if (nd >= det * (1 - 1e-9)) {
@@ -129,14 +196,22 @@ Robust2D RobustMcd2D(const std::vector<Eigen::Vector2d>& pts, unsigned seed, int
     return std::make_pair(det, mc);
   };
 
+  // FAST-MCD's schedule (Rousseeuw & Van Driessen 1999, sec. 3.2): two
+  // C-steps from every start, then only the best ones to convergence.
+  std::vector<std::pair<double, MeanCov>> started;
   for (int s = 0; s < starts; ++s) {
     std::vector<int> idx;
     while (static_cast<int>(idx.size()) < 3) {
-      const int k = pick(rng);
+      const int k = static_cast<int>(SplitMix(&rng) % static_cast<uint64_t>(n));
       if (std::find(idx.begin(), idx.end(), k) == idx.end()) idx.push_back(k);
     }
-    MeanCov mc = Estimate(pts, idx);
-    const auto [det, refined] = c_steps(mc);
+    started.push_back(c_steps(Estimate(pts, idx), 2));
+  }
+  std::stable_sort(started.begin(), started.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  started.resize(std::min<size_t>(started.size(), kConverged));
+  for (const auto& start : started) {
+    const auto [det, refined] = c_steps(start.second, 20);
     if (det < best_det) {
       best_det = det;
       best = refined;
@@ -145,23 +220,21 @@ Robust2D RobustMcd2D(const std::vector<Eigen::Vector2d>& pts, unsigned seed, int
   // Consistency factor for the raw MCD scatter: median of the squared
   // distances should be the chi2(2) median.
   Regularise(&best.cov);
+  Distances(pts, best, &d2);
   {
-    const Eigen::Matrix2d inv = best.cov.inverse();
-    for (int i = 0; i < n; ++i) {
-      const Eigen::Vector2d d = pts[i] - best.mean;
-      d2[i] = d.dot(inv * d);
-    }
-    std::vector<double> tmp = d2;
-    std::nth_element(tmp.begin(), tmp.begin() + n / 2, tmp.end());
-    const double f = std::max(tmp[n / 2] / kChi2_2_50, 1e-6);
+    scratch = d2;
+    std::nth_element(scratch.begin(), scratch.begin() + n / 2, scratch.end());
+    const double f = std::max(scratch[n / 2] / kChi2_2_50, 1e-6);
     best.cov *= f;
     for (double& x : d2) x /= f;
   }
-  std::vector<int> keep;
-  for (int i = 0; i < n; ++i)
-    if (d2[i] <= kChi2_2_975) keep.push_back(i);
-  if (keep.size() < 3) return out;
-  const MeanCov fin = Estimate(pts, keep);
+  int kept = 0;
+  for (int i = 0; i < n; ++i) {
+    take[i] = d2[i] <= kChi2_2_975;
+    kept += take[i];
+  }
+  if (kept < 3) return out;
+  const MeanCov fin = EstimateMarked(pts, take);
   out.mean = fin.mean;
   // Truncation at 97.5 % of chi2(2) shrinks the scatter by 0.8724... for
   // normal data: E[d2 | d2 < q] / 2 = 1 - q e^{-q/2} / (2 (1 - e^{-q/2})).
@@ -169,7 +242,7 @@ Robust2D RobustMcd2D(const std::vector<Eigen::Vector2d>& pts, unsigned seed, int
   const double shrink = 1 - q * std::exp(-q / 2) / (2 * (1 - std::exp(-q / 2)));
   out.cov = fin.cov / shrink;
   Regularise(&out.cov);
-  out.inliers = static_cast<int>(keep.size());
+  out.inliers = kept;
   out.valid = true;
   return out;
 }

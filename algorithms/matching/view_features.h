@@ -78,7 +78,23 @@ std::vector<Eigen::Vector2d> FlankingRegion(const cv::Mat& labels, const Segment
 SideColour RegionColour(const cv::Mat& lab, const std::vector<Eigen::Vector2d>& pixels,
                         const MatchOptions& options, unsigned seed);
 
-// Bilinear sample of a float image channel; false outside.
-bool SampleBilinear(const cv::Mat& image, const Eigen::Vector2d& image_px, float* out3);
+// Bilinear sample of all channels of a float image; false outside. Inline:
+// the correlation calls it for every pixel of every candidate's strips.
+inline bool SampleBilinear(const cv::Mat& image, const Eigen::Vector2d& p, float* out) {
+  // Pixel centres are at +0.5 (corner convention).
+  const double x = p.x() - 0.5, y = p.y() - 0.5;
+  if (!(x >= 0 && y >= 0 && x < image.cols - 1 && y < image.rows - 1)) return false;
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  const int ch = image.channels();
+  const float* r0 = image.ptr<float>(y0) + x0 * ch;
+  const float* r1 = image.ptr<float>(y0 + 1) + x0 * ch;
+  for (int c = 0; c < ch; ++c) {
+    const float top = r0[c] + fx * (r0[ch + c] - r0[c]);
+    const float bot = r1[c] + fx * (r1[ch + c] - r1[c]);
+    out[c] = top + fy * (bot - top);
+  }
+  return true;
+}
 
 }  // namespace roofsweep
