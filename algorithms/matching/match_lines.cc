@@ -22,6 +22,7 @@
 #include "algorithms/matching/epipolar.h"
 #include "algorithms/matching/junction_completion.h"
 #include "algorithms/matching/line_triangulation.h"
+#include "algorithms/matching/residual_test.h"
 #include "algorithms/matching/view_features.h"
 #include "algorithms/matching/view_support.h"
 
@@ -402,6 +403,58 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
       for (int m : members) res.lines.push_back(good[m]);
     }
   }
+  if (o.residual_alpha > 0) {
+    std::vector<LineFitResidual> fits;
+    for (const Line3D& l : res.lines) fits.push_back({l.rms_px, l.Views()});
+    const ResidualNoise noise = EstimateResidualNoise(fits);
+    res.funnel.residual_sigma_px = noise.sigma_px;
+    res.funnel.residual_lines = noise.lines;
+    if (truth) res.funnel.residual_rejected_true = 0;
+    auto consistent_fit = [&](const Line3D& l) {
+      return ResidualConsistent({l.rms_px, l.Views()}, noise.sigma_px, o.residual_alpha);
+    };
+    // A line that fails loses its worst supporting observation (a view with
+    // a larger orientation error, a neighbouring segment taken as support)
+    // and is tested again, as a track is cleaned of outlying observations in
+    // bundle adjustment; but only while the verification's minimum support
+    // remains besides the matched pair (observations 0 and 1), so that a
+    // wrong pair cannot shed the views that contradict it.
+    const int min_views = 2 + std::max(1, o.min_support_segments);
+    tbb::parallel_for(size_t{0}, res.lines.size(), [&](size_t k) {
+      Line3D& l = res.lines[k];
+      while (!consistent_fit(l) && l.Views() > min_views) {
+        size_t worst = 2;
+        double worst_r2 = -1;
+        for (size_t m = 2; m < l.observations.size(); ++m) {
+          const auto& [v, s] = l.observations[m];
+          const double r2 = LineResidual(observe(v, s), l.segment.a, l.segment.b).squaredNorm();
+          if (r2 > worst_r2) {
+            worst_r2 = r2;
+            worst = m;
+          }
+        }
+        std::vector<std::pair<int, int>> keys = l.observations;
+        keys.erase(keys.begin() + static_cast<long>(worst));
+        Line3D pruned;
+        if (!estimate(keys, l.segment, &pruned)) break;
+        l = std::move(pruned);
+      }
+    });
+    std::vector<Line3D> consistent;
+    for (Line3D& l : res.lines) {
+      if (consistent_fit(l)) {
+        consistent.push_back(std::move(l));
+        continue;
+      }
+      ++res.funnel.residual_rejected;
+      if (truth) {
+        const auto& [v0, s0] = l.observations[0];
+        const auto& [v1, s1] = l.observations[1];
+        res.funnel.residual_rejected_true += Shares(labels[v0][s0], labels[v1][s1]);
+      }
+    }
+    res.lines = std::move(consistent);
+  }
   if (o.junction_completion) {
     JunctionCompletion jc = CompleteAtJunctions(views, res.lines, z_range, o);
     res.funnel.junction_candidates = jc.candidates;
@@ -453,6 +506,22 @@ std::string FormatFunnel(const MatchFunnel& f) {
   std::snprintf(buf, sizeof buf, "  segment/pair combinations skipped as nearly epipolar: %lld\n",
                 f.skipped_epipolar);
   out << buf;
+  if (f.residual_sigma_px > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "  residual test: noise %.3f px (from %d lines in 3+ views), %d lines "
+                  "rejected",
+                  f.residual_sigma_px, f.residual_lines, f.residual_rejected);
+    out << buf;
+    if (f.residual_rejected_true >= 0) {
+      std::snprintf(buf, sizeof buf, " (%d of them on a true edge)", f.residual_rejected_true);
+      out << buf;
+    }
+    out << "\n";
+  } else if (f.residual_lines >= 0) {
+    std::snprintf(buf, sizeof buf, "  residual test: not run (%d lines in 3+ views)\n",
+                  f.residual_lines);
+    out << buf;
+  }
   std::snprintf(buf, sizeof buf,
                 "  junction completion: %lld unused segments anchored at both ends, %lld "
                 "verified, %d 3D lines added",

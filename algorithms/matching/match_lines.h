@@ -44,6 +44,11 @@ struct MatchFunnel {
   long long junction_candidates = 0, junction_verified = 0;
   int junction_lines = 0;
   int junction_true = -1;  // with truth: added lines whose observations share a true edge
+  // Residual test (residual_test.h): the noise level (0: not estimated), the
+  // lines it rests on (-1: test off), the lines rejected and, with truth,
+  // how many of those had observations sharing a true edge.
+  double residual_sigma_px = 0;
+  int residual_lines = -1, residual_rejected = 0, residual_rejected_true = -1;
   // Ground truth (-1: unknown): true pairs among all segment pairs of
   // overlapping views, and how many of them survive each stage.
   long long true_all = -1, true_geometric = -1, true_chromatic = -1, true_correlation = -1,

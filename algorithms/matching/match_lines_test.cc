@@ -8,6 +8,7 @@
 
 #include "algorithms/core/error.h"
 #include "algorithms/eval/line_eval.h"
+#include "algorithms/matching/residual_test.h"
 #include "algorithms/matching/sim_block_fixture.h"
 
 namespace roofsweep {
@@ -60,8 +61,16 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
       used.insert(l.observations.begin(), l.observations.end());
       EXPECT_GE(l.Views(), 2);
       EXPECT_LE(l.rms_px, MatchOptions{}.max_residual);
+      // The residual test ran on the stereo lines (junction lines have their own checks).
+      if (!l.from_junctions)
+        EXPECT_TRUE(ResidualConsistent({l.rms_px, l.Views()}, f.residual_sigma_px,
+                                       MatchOptions{}.residual_alpha));
     }
     EXPECT_EQ(used.size(), obs);
+    // Synthetic images with exact orientations: segment noise of a few
+    // tenths of a pixel at most.
+    EXPECT_GT(f.residual_sigma_px, 0.01) << "seed " << seed;
+    EXPECT_LT(f.residual_sigma_px, 0.5) << "seed " << seed;
   }
 }
 

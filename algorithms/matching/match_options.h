@@ -107,6 +107,11 @@ struct MatchOptions {
   double merge_gap_m = 0.5;
   // Lines with an RMS endpoint-to-line reprojection residual above this are dropped.
   double max_residual = 1.5;
+  // Significance of the residual test of lines in three or more views
+  // against the noise level estimated from the block's own lines
+  // (residual_test.h); 0 switches the test off. 0.001: a correct line is
+  // rejected once in a thousand.
+  double residual_alpha = 0.001;
   // At least this many views must observe a final line.
   int min_views = 2;
 
