@@ -114,7 +114,8 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     tbb::parallel_for(0, nv,
                       [&](int v) { labels[v] = TruthLabels(views[v], *truth, o.min_length); });
     res.funnel.true_all = res.funnel.true_geometric = res.funnel.true_chromatic =
-        res.funnel.true_correlation = res.funnel.true_verified = res.funnel.true_assigned = 0;
+        res.funnel.true_correlation = res.funnel.true_verified = res.funnel.true_unambiguous =
+            res.funnel.true_assigned = 0;
   }
 
   const auto z_range = SceneHeightRange(block, o.height_margin_m);
@@ -299,6 +300,17 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     items[n].keys = {{hyps[n].h.vi, hyps[n].h.si}, {hyps[n].h.vj, hyps[n].h.sj}};
     for (const auto& s : hyps[n].support) items[n].keys.push_back(s);
   }
+  if (o.unique_matches) {
+    const std::vector<char> unique = UnambiguousItems(items);
+    for (size_t n = 0; n < items.size(); ++n)
+      if (!unique[n]) items[n].keys.clear();
+  }
+  res.funnel.unambiguous = 0;
+  for (size_t n = 0; n < items.size(); ++n)
+    if (!items[n].keys.empty()) {
+      ++res.funnel.unambiguous;
+      if (truth) res.funnel.true_unambiguous += hyps[n].h.true_pair == 1;
+    }
   const auto assigned = AssignOneToOne(items);
   res.timings.assign_s = Seconds(t0);
 
@@ -499,6 +511,7 @@ std::string FormatFunnel(const MatchFunnel& f) {
   row("chromatic (integrated)", f.chromatic, f.true_chromatic);
   row("chromatic correlation", f.correlation, f.true_correlation);
   row("verified in other views", f.verified, f.true_verified);
+  row("unambiguous", f.unambiguous, f.true_unambiguous);
   row("one-to-one (final)", f.assigned, f.true_assigned);
   std::snprintf(buf, sizeof buf, "  3D lines: %d (before merging collinear fragments: %d)\n",
                 f.lines, f.lines_before_merge);

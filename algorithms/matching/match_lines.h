@@ -37,7 +37,8 @@ struct MatchFunnel {
   long long segments = 0;          // detected, all views
   int view_pairs = 0;              // pairs with distinct centres
   long long skipped_epipolar = 0;  // segment/pair combinations nearly along the epipolar lines
-  long long geometric = 0, chromatic = 0, correlation = 0, verified = 0, assigned = 0;
+  long long geometric = 0, chromatic = 0, correlation = 0, verified = 0, unambiguous = 0,
+            assigned = 0;
   int lines_before_merge = 0, lines = 0;
   // Junction completion: unused segments anchored at both ends, those that
   // passed the verification, and the lines added (included in `lines`).
@@ -52,7 +53,7 @@ struct MatchFunnel {
   // Ground truth (-1: unknown): true pairs among all segment pairs of
   // overlapping views, and how many of them survive each stage.
   long long true_all = -1, true_geometric = -1, true_chromatic = -1, true_correlation = -1,
-            true_verified = -1, true_assigned = -1;
+            true_verified = -1, true_unambiguous = -1, true_assigned = -1;
 };
 
 struct MatchTimings {

@@ -52,7 +52,8 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
     EXPECT_GE(f.geometric, f.chromatic);
     EXPECT_GE(f.chromatic, f.correlation);
     EXPECT_GE(f.correlation, f.verified);
-    EXPECT_GE(f.verified, f.assigned);
+    EXPECT_GE(f.verified, f.unambiguous);
+    EXPECT_GE(f.unambiguous, f.assigned);
     // One-to-one: no (view, segment) in two lines before merging.
     std::set<std::pair<int, int>> used;
     size_t obs = 0;
@@ -62,9 +63,10 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
       EXPECT_GE(l.Views(), 2);
       EXPECT_LE(l.rms_px, MatchOptions{}.max_residual);
       // The residual test ran on the stereo lines (junction lines have their own checks).
-      if (!l.from_junctions)
+      if (!l.from_junctions) {
         EXPECT_TRUE(ResidualConsistent({l.rms_px, l.Views()}, f.residual_sigma_px,
                                        MatchOptions{}.residual_alpha));
+      }
     }
     EXPECT_EQ(used.size(), obs);
     // Synthetic images with exact orientations: segment noise of a few

@@ -98,6 +98,12 @@ struct MatchOptions {
   // Projections shorter than this in a view do not count as seeing it.
   double verify_min_length = 10.0;
 
+  // ---- assignment
+  // Drop a verified hypothesis when another one gives one of its segments a
+  // different 3D line with at least its score (UnambiguousItems), before the
+  // greedy one-to-one assignment.
+  bool unique_matches = true;
+
   // ---- 3D estimation
   // Collinear 3D fragments are merged when their directions differ by less
   // than merge_angle and each endpoint lies within merge_distance_m of the

@@ -266,5 +266,42 @@ TEST(Assignment, PicksTheConsistentOneToOneSet) {
   for (size_t k = 0; k < items.size(); ++k) EXPECT_EQ(a[k].empty(), b[k].empty());
 }
 
+TEST(Assignment, ASegmentDoesNotFallBackToItsSecondChoice) {
+  // Tile courses: (0,2)'s best partner (1,5) goes to the better (0,1)-(1,5).
+  // The greedy assignment alone then pairs (0,2) with its second choice
+  // (1,6), the neighbouring course.
+  std::vector<AssignmentItem> items(3);
+  items[0] = {{{0, 1}, {1, 5}}, 5.0};
+  items[1] = {{{0, 2}, {1, 5}}, 4.0};
+  items[2] = {{{0, 2}, {1, 6}}, 3.0};
+  const auto greedy = AssignOneToOne(items);
+  EXPECT_FALSE(greedy[2].empty());
+  const std::vector<char> unique = UnambiguousItems(items);
+  EXPECT_TRUE(unique[0]);
+  EXPECT_FALSE(unique[1]);  // (1,5) has a better line
+  EXPECT_FALSE(unique[2]);  // (0,2) has a better, different line
+}
+
+TEST(Assignment, RivalsOfEqualScoreBothGoAndOneLineInTwoViewPairsStays) {
+  std::vector<AssignmentItem> items(4);
+  // (0,1) with (1,5) or (1,6), equally good: ambiguous, both go.
+  items[0] = {{{0, 1}, {1, 5}}, 2.0};
+  items[1] = {{{0, 1}, {1, 6}}, 2.0};
+  // (0,3) matched in view 1 and in view 2: one line when the view-2 segment
+  // supports the view-1 match (or the other way round), not rivals.
+  items[2] = {{{0, 3}, {1, 7}, {2, 8}}, 3.0};
+  items[3] = {{{0, 3}, {2, 8}}, 2.5};
+  const std::vector<char> unique = UnambiguousItems(items);
+  EXPECT_FALSE(unique[0]);
+  EXPECT_FALSE(unique[1]);
+  EXPECT_TRUE(unique[2]);
+  EXPECT_TRUE(unique[3]);
+  // Without the support link they are rivals and the weaker one goes.
+  items[2].keys.pop_back();
+  const std::vector<char> rivals = UnambiguousItems(items);
+  EXPECT_TRUE(rivals[2]);
+  EXPECT_FALSE(rivals[3]);
+}
+
 }  // namespace
 }  // namespace roofsweep
