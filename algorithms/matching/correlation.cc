@@ -91,6 +91,75 @@ void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
   }
 }
 
+// The second view's side, sampled once for all scales: per column, L*a*b*
+// at distances t0, t0 + dt, ... along the epipolar step up to the farthest
+// row of the largest scale, and how far the column reaches before another
+// contour or the image border. Each scale's rows then interpolate between
+// these (the scale search reads the image once instead of scale_steps
+// times).
+struct FineColumns {
+  double t0 = 0, dt = 0.5;
+  int samples = 0;
+  std::vector<float> lab;  // [u][k][3]
+  std::vector<int> reach;  // per column: samples before the first contour
+};
+
+void SampleFine(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
+                const std::vector<Eigen::Vector2d>& across, int seg_id, double t_min, double t_max,
+                FineColumns* fc) {
+  fc->t0 = t_min;
+  fc->samples = static_cast<int>(std::ceil((t_max - t_min) / fc->dt)) + 2;
+  const int cols = static_cast<int>(pts.size());
+  fc->lab.assign(static_cast<size_t>(cols) * fc->samples * 3, 0.f);
+  fc->reach.assign(cols, 0);
+  for (int u = 0; u < cols; ++u) {
+    if (across[u].x() == 0 && across[u].y() == 0) continue;
+    for (int k = 0; k < fc->samples; ++k) {
+      const Eigen::Vector2d p = v.ToImage(pts[u] + (fc->t0 + k * fc->dt) * across[u]);
+      if (!v.Inside(p)) break;
+      const int l = v.labels.at<int>(static_cast<int>(p.y()), static_cast<int>(p.x()));
+      if (l >= 0 && l != seg_id) break;
+      if (!SampleBilinear(v.lab, p, &fc->lab[(static_cast<size_t>(u) * fc->samples + k) * 3]))
+        break;
+      fc->reach[u] = k + 1;
+    }
+  }
+}
+
+// SampleSide's strip at one scale, from the fine columns.
+void StripFromFine(const FineColumns& fc, const ViewFeatures& v, double scale,
+                   const SideColour& attr, const MatchOptions& o, Strip* st) {
+  st->cols = static_cast<int>(fc.reach.size());
+  st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
+  st->b1.assign(st->cols * st->rows, 0.f);
+  st->b2.assign(st->cols * st->rows, 0.f);
+  st->valid.assign(st->cols * st->rows, 0);
+  const double lo = attr.l_location - o.l_outlier_sigmas * attr.l_scale;
+  const double hi = attr.l_location + o.l_outlier_sigmas * attr.l_scale;
+  for (int u = 0; u < st->cols; ++u) {
+    const float* col = &fc.lab[static_cast<size_t>(u) * fc.samples * 3];
+    for (int m = 0; m < st->rows; ++m) {
+      const double x = ((o.region_offset + 0.5 + m) * scale - fc.t0) / fc.dt;
+      const int k = static_cast<int>(std::floor(x));
+      if (k < 0 || k + 1 >= fc.reach[u]) break;
+      const float f = static_cast<float>(x - k);
+      float lab[3];
+      for (int c = 0; c < 3; ++c)
+        lab[c] = col[k * 3 + c] + f * (col[(k + 1) * 3 + c] - col[k * 3 + c]);
+      if (attr.valid && (lab[0] < lo || lab[0] > hi)) continue;
+      const int idx = m * st->cols + u;
+      if (v.grey) {
+        st->b1[idx] = lab[0];
+        st->b2[idx] = lab[0];
+      } else {
+        st->b1[idx] = lab[1];
+        st->b2[idx] = lab[2];
+      }
+      st->valid[idx] = 1;
+    }
+  }
+}
+
 }  // namespace
 
 double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const PairGeometry& g,
@@ -119,6 +188,11 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
   Strip a, b;
   SampleSide(vi, pi, AcrossSteps(pi, ni, g.e_i), h.si, 1.0, ai, o, &a);
   const std::vector<Eigen::Vector2d> across_j = AcrossSteps(pj, nj, g.e_j);
+  const int rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
+  FineColumns fine;
+  const double widest = std::max(o.max_scale, 1.0 / o.max_scale);
+  SampleFine(vj, pj, across_j, h.sj, (o.region_offset + 0.5) / widest,
+             (o.region_offset + 0.5 + rows - 1) * widest, &fine);
   const int half = std::max(1, static_cast<int>(std::lround(o.ncc_window / o.sample_step / 2)));
   std::vector<float> x1, x2, y1, y2;
   double best = -9;
@@ -127,7 +201,7 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
     // Geometric series from 1/max_scale to max_scale.
     const double e = steps == 1 ? 0.0 : -1.0 + 2.0 * k / (steps - 1);
     const double scale = std::pow(o.max_scale, e);
-    SampleSide(vj, pj, across_j, h.sj, scale, aj, o, &b);
+    StripFromFine(fine, vj, scale, aj, o, &b);
     double sum = 0;
     int windows = 0;
     for (int u = 0; u < a.cols; u += std::max(1, half)) {
