@@ -54,17 +54,31 @@ std::vector<Eigen::Vector2d> AcrossSteps(const std::vector<Eigen::Vector2d>& pts
   return steps;
 }
 
+void ResetStrip(int cols, const MatchOptions& o, Strip* st) {
+  st->cols = cols;
+  st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
+  st->b1.assign(st->cols * st->rows, 0.f);
+  st->b2.assign(st->cols * st->rows, 0.f);
+  st->valid.assign(st->cols * st->rows, 0);
+}
+
+// Stores a sample at strip index idx: a*, b* (L* twice in a grey view),
+// unless its L* lies outside the side's inlier band [lo, hi].
+void Store(const ViewFeatures& v, const SideColour& attr, double lo, double hi, const float* lab,
+           int idx, Strip* st) {
+  if (attr.valid && (lab[0] < lo || lab[0] > hi)) return;
+  st->b1[idx] = v.grey ? lab[0] : lab[1];
+  st->b2[idx] = v.grey ? lab[0] : lab[2];
+  st->valid[idx] = 1;
+}
+
 // Samples the parallelogram of one side: column u at point p(u) on the
 // segment, row m at perpendicular distance offset + 0.5 + m, stepping along
 // the epipolar direction. Columns stop at another contour.
 void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
                 const std::vector<Eigen::Vector2d>& across, int seg_id, double scale,
                 const SideColour& attr, const MatchOptions& o, Strip* st) {
-  st->cols = static_cast<int>(pts.size());
-  st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
-  st->b1.assign(st->cols * st->rows, 0.f);
-  st->b2.assign(st->cols * st->rows, 0.f);
-  st->valid.assign(st->cols * st->rows, 0);
+  ResetStrip(static_cast<int>(pts.size()), o, st);
   const double lo = attr.l_location - o.l_outlier_sigmas * attr.l_scale;
   const double hi = attr.l_location + o.l_outlier_sigmas * attr.l_scale;
   for (int u = 0; u < st->cols; ++u) {
@@ -77,16 +91,7 @@ void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
       if (l >= 0 && l != seg_id) break;
       float lab[3];
       if (!SampleBilinear(v.lab, p, lab)) break;
-      if (attr.valid && (lab[0] < lo || lab[0] > hi)) continue;
-      const int k = m * st->cols + u;
-      if (v.grey) {
-        st->b1[k] = lab[0];
-        st->b2[k] = lab[0];
-      } else {
-        st->b1[k] = lab[1];
-        st->b2[k] = lab[2];
-      }
-      st->valid[k] = 1;
+      Store(v, attr, lo, hi, lab, m * st->cols + u, st);
     }
   }
 }
@@ -129,11 +134,7 @@ void SampleFine(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
 // SampleSide's strip at one scale, from the fine columns.
 void StripFromFine(const FineColumns& fc, const ViewFeatures& v, double scale,
                    const SideColour& attr, const MatchOptions& o, Strip* st) {
-  st->cols = static_cast<int>(fc.reach.size());
-  st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
-  st->b1.assign(st->cols * st->rows, 0.f);
-  st->b2.assign(st->cols * st->rows, 0.f);
-  st->valid.assign(st->cols * st->rows, 0);
+  ResetStrip(static_cast<int>(fc.reach.size()), o, st);
   const double lo = attr.l_location - o.l_outlier_sigmas * attr.l_scale;
   const double hi = attr.l_location + o.l_outlier_sigmas * attr.l_scale;
   for (int u = 0; u < st->cols; ++u) {
@@ -146,16 +147,7 @@ void StripFromFine(const FineColumns& fc, const ViewFeatures& v, double scale,
       float lab[3];
       for (int c = 0; c < 3; ++c)
         lab[c] = col[k * 3 + c] + f * (col[(k + 1) * 3 + c] - col[k * 3 + c]);
-      if (attr.valid && (lab[0] < lo || lab[0] > hi)) continue;
-      const int idx = m * st->cols + u;
-      if (v.grey) {
-        st->b1[idx] = lab[0];
-        st->b2[idx] = lab[0];
-      } else {
-        st->b1[idx] = lab[1];
-        st->b2[idx] = lab[2];
-      }
-      st->valid[idx] = 1;
+      Store(v, attr, lo, hi, lab, m * st->cols + u, st);
     }
   }
 }
