@@ -22,6 +22,7 @@ struct Hypothesis {
   Segment3 line;
   ViewSupport support;
   bool ok = false;
+  bool horizontal = false;  // one junction and the horizontal assumption
 };
 
 // The junction of one end `e` (ideal pixels) of a segment with the
@@ -92,7 +93,7 @@ JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
   for (int v = 0; v < nv; ++v)
     for (size_t s = 0; s < views[v].ideal.size(); ++s)
       if (views[v].ideal[s].Length() >= o.min_length && !used.count({v, static_cast<int>(s)}))
-        hyps.push_back({v, static_cast<int>(s), {}, {}, false});
+        hyps.push_back({v, static_cast<int>(s), {}, {}, false, false});
 
   // An anchor's projection may stop short of the corner by up to
   // junction_gap_m; 50 px covers a metre down to 2 cm GSD.
@@ -111,9 +112,14 @@ JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
       std::vector<int> near;
       for (int k : index[h.view]->NearPoint(e, reach)) near.push_back(line_of[h.view][k]);
       X[end] = Junction(v, plane, e, lines, near, o, &anchor[end]);
-      if (!X[end]) return;
     }
-    if (anchor[0] == anchor[1]) return;
+    if (o.junction_horizontal && X[0].has_value() != X[1].has_value()) {
+      const int known = X[0] ? 0 : 1;
+      const Eigen::Vector4d level(0, 0, 1, -X[known]->z());
+      X[1 - known] = IntersectPlane(RayThrough(v, known == 0 ? s.p1 : s.p0), level);
+      h.horizontal = true;
+    }
+    if (!X[0] || !X[1] || anchor[0] == anchor[1]) return;
     candidate[n] = 1;
     h.line.a = *X[0];
     h.line.b = *X[1];
@@ -176,6 +182,8 @@ JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
     line.rms_px = rms;
     line.observations = keys;
     line.from_junctions = true;
+    line.horizontal_assumed = h.horizontal;
+    out.horizontal += h.horizontal;
     line.colour_left = views[h.view].segments[h.segment].colour_left;
     line.colour_right = views[h.view].segments[h.segment].colour_right;
     for (const auto& k : keys) used.insert(k);

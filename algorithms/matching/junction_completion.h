@@ -32,10 +32,18 @@ namespace roofsweep {
 // with at least one detected segment, and reproject within max_residual.
 // Hypotheses are taken greedily (most supporting segments, then longest),
 // one-to-one over (view, segment) with the existing lines.
+//
+// With junction_horizontal, a segment anchored at one end only is completed
+// as a horizontal line: its free end where the ray through it meets the
+// anchor's height. The roof edges along the flight line are mostly eaves
+// and ridges, which are horizontal; the other corner must still be seen
+// again in another view, which a wrong height fails wherever the line is not
+// exactly along the epipolar lines.
 struct JunctionCompletion {
   std::vector<Line3D> lines;
-  long long candidates = 0;  // unused segments with an anchor at both ends
+  long long candidates = 0;  // unused segments with an anchor at both ends (or at one, horizontal)
   long long verified = 0;    // ... whose hypothesis passed the verification
+  int horizontal = 0;        // lines from one junction, assumed horizontal
 };
 JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
                                        const std::vector<Line3D>& lines,

@@ -109,10 +109,53 @@ TEST(JunctionCompletion, TheCornersMustBeSeenAgain) {
     Segment2D& r = (*segs)[kRidge];
     r.p1 -= 20.0 * r.Direction();
   });
+  MatchOptions two_ends;
+  two_ends.junction_horizontal = false;
   const JunctionCompletion jc =
-      CompleteAtJunctions(s.views, s.verges, SceneHeightRange(s.block, 3.0), MatchOptions{});
+      CompleteAtJunctions(s.views, s.verges, SceneHeightRange(s.block, 3.0), two_ends);
   ASSERT_EQ(jc.lines.size(), 1u);
   EXPECT_EQ(jc.lines[0].observations[0].second, kEave);
+  // The shortened ridge has one corner, at the verge; as a horizontal line
+  // from there its other end is seen again in the other shortened view.
+  const JunctionCompletion jh =
+      CompleteAtJunctions(s.views, s.verges, SceneHeightRange(s.block, 3.0), MatchOptions{});
+  ASSERT_EQ(jh.lines.size(), 2u);
+  EXPECT_EQ(jh.horizontal, 1);
+  for (const Line3D& l : jh.lines) {
+    if (!l.horizontal_assumed) continue;
+    EXPECT_EQ(l.observations[0].second, kRidge);
+    EXPECT_NE(l.observations[0].first, 0);  // from the shortened views
+    for (const Eigen::Vector3d& p : {l.segment.a, l.segment.b}) {
+      EXPECT_NEAR(p.y(), 0, 1e-6);
+      EXPECT_NEAR(p.z(), 14, 1e-6);
+    }
+  }
+}
+
+TEST(JunctionCompletion, OneCornerGivesAHorizontalLineButNotASlopedOne) {
+  // Anchors: the left verge and the eave. The ridge meets the verge at one
+  // end only and comes out horizontal, as it is. The right verge meets the
+  // eave at one end only: horizontal from there it would stay at the eave's
+  // height, where the other views do not see it (it is not along the
+  // epipolar lines), so it is not completed.
+  Scene s = MakeScene();
+  Line3D eave;
+  eave.segment = Edges()[kEave];
+  eave.observations = {{0, kEave}, {1, kEave}, {2, kEave}};
+  const std::vector<Line3D> anchors = {s.verges[0], eave};
+  const JunctionCompletion jc =
+      CompleteAtJunctions(s.views, anchors, SceneHeightRange(s.block, 3.0), MatchOptions{});
+  ASSERT_EQ(jc.lines.size(), 1u);
+  const Line3D& l = jc.lines[0];
+  EXPECT_TRUE(l.horizontal_assumed);
+  EXPECT_STREQ(DepthFrom(l), "junction_horizontal");
+  EXPECT_EQ(l.observations[0].second, kRidge);
+  EXPECT_LT(Distance(l.segment, {kRidgeA, kRidgeB}), 1e-6);
+  // Off, a single corner completes nothing.
+  MatchOptions two_ends;
+  two_ends.junction_horizontal = false;
+  EXPECT_TRUE(CompleteAtJunctions(s.views, anchors, SceneHeightRange(s.block, 3.0), two_ends)
+                  .lines.empty());
 }
 
 TEST(JunctionCompletion, NoAnchorsNoLines) {

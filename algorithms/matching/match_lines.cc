@@ -472,6 +472,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     res.funnel.junction_candidates = jc.candidates;
     res.funnel.junction_verified = jc.verified;
     res.funnel.junction_lines = static_cast<int>(jc.lines.size());
+    res.funnel.junction_horizontal = jc.horizontal;
     if (truth) {
       res.funnel.junction_true = 0;
       for (const Line3D& l : jc.lines) {
@@ -486,6 +487,11 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   res.timings.triangulate_s = Seconds(t0);
   ReportOrCancel(progress, 1.0, "done");
   return res;
+}
+
+const char* DepthFrom(const Line3D& line) {
+  if (!line.from_junctions) return "stereo";
+  return line.horizontal_assumed ? "junction_horizontal" : "junctions";
 }
 
 std::string FormatFunnel(const MatchFunnel& f) {
@@ -536,12 +542,13 @@ std::string FormatFunnel(const MatchFunnel& f) {
     out << buf;
   }
   std::snprintf(buf, sizeof buf,
-                "  junction completion: %lld unused segments anchored at both ends, %lld "
-                "verified, %d 3D lines added",
-                f.junction_candidates, f.junction_verified, f.junction_lines);
+                "  junction completion: %lld unused segments anchored at both ends (or at one), "
+                "%lld verified, %d 3D lines added (%d of them horizontal from one junction)",
+                f.junction_candidates, f.junction_verified, f.junction_lines,
+                f.junction_horizontal);
   out << buf;
   if (f.junction_true >= 0) {
-    std::snprintf(buf, sizeof buf, " (%d on a true edge)", f.junction_true);
+    std::snprintf(buf, sizeof buf, ", %d on a true edge", f.junction_true);
     out << buf;
   }
   out << "\n";

@@ -28,8 +28,14 @@ struct Line3D {
   // Depth from the 3D lines at its ends rather than from stereo
   // (CompleteAtJunctions).
   bool from_junctions = false;
+  // Depth from one junction, the line assumed horizontal.
+  bool horizontal_assumed = false;
   int Views() const { return static_cast<int>(observations.size()); }
 };
+
+// Where a line's depth comes from, as written in `lines3d.depth_from`:
+// "stereo", "junctions" or "junction_horizontal".
+const char* DepthFrom(const Line3D& line);
 
 // Counts of the reduction funnel (Scholze et al. 2000, §4) summed over the
 // view pairs, with the ground-truth counterparts when truth was given.
@@ -43,7 +49,7 @@ struct MatchFunnel {
   // Junction completion: unused segments anchored at both ends, those that
   // passed the verification, and the lines added (included in `lines`).
   long long junction_candidates = 0, junction_verified = 0;
-  int junction_lines = 0;
+  int junction_lines = 0, junction_horizontal = 0;
   int junction_true = -1;  // with truth: added lines whose observations share a true edge
   // Residual test (residual_test.h): the noise level (0: not estimated), the
   // lines it rests on (-1: test off), the lines rejected and, with truth,

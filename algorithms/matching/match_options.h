@@ -132,6 +132,9 @@ struct MatchOptions {
   double junction_gap_m = 1.0;
   double junction_min_angle = 15.0;
   double junction_min_length_m = 1.0;
+  // A segment anchored at one end only becomes a horizontal line at the
+  // anchor's height (eaves and ridges; see CompleteAtJunctions).
+  bool junction_horizontal = true;
 
   // Seed of the random threshold initialisation.
   unsigned seed = 1;

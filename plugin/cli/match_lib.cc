@@ -138,7 +138,7 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
     f.integers["views"] = l.Views();
     f.reals["rms_px"] = l.rms_px;
     f.reals["length_m"] = l.segment.Length();
-    f.strings["depth_from"] = l.from_junctions ? "junctions" : "stereo";
+    f.strings["depth_from"] = DepthFrom(l);
     f.strings["colour_left"] = Hex(l.colour_left);
     f.strings["colour_right"] = Hex(l.colour_right);
     std::string obs;

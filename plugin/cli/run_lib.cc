@@ -178,7 +178,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       f.integers["views"] = l.Views();
       f.reals["rms_px"] = l.rms_px;
       f.reals["length_m"] = l.segment.Length();
-      f.strings["depth_from"] = l.from_junctions ? "junctions" : "stereo";
+      f.strings["depth_from"] = DepthFrom(l);
       features.push_back(std::move(f));
     }
     FeatureLayerOptions lo;
