@@ -76,14 +76,14 @@ void Store(const ViewFeatures& v, const SideColour& attr, double lo, double hi, 
 // segment, row m at perpendicular distance offset + 0.5 + m, stepping along
 // the epipolar direction. Columns stop at another contour.
 void SampleSide(const ViewFeatures& v, const std::vector<Eigen::Vector2d>& pts,
-                const std::vector<Eigen::Vector2d>& across, int seg_id, double scale,
-                const SideColour& attr, const MatchOptions& o, Strip* st) {
+                const std::vector<Eigen::Vector2d>& across, int seg_id, const SideColour& attr,
+                const MatchOptions& o, Strip* st) {
   ResetStrip(static_cast<int>(pts.size()), o, st);
   const double lo = attr.l_location - o.l_outlier_sigmas * attr.l_scale;
   const double hi = attr.l_location + o.l_outlier_sigmas * attr.l_scale;
   for (int u = 0; u < st->cols; ++u) {
     if (across[u].x() == 0 && across[u].y() == 0) continue;
-    const Eigen::Vector2d step = across[u] * scale;
+    const Eigen::Vector2d& step = across[u];
     for (int m = 0; m < st->rows; ++m) {
       const Eigen::Vector2d p = v.ToImage(pts[u] + (o.region_offset + 0.5 + m) * step);
       if (!v.Inside(p)) break;
@@ -178,7 +178,7 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
   const SideColour& ai = vi.sides[h.si][side];
   const SideColour& aj = vj.sides[h.sj][(side_j == side_i) ? side : 1 - side];
   Strip a, b;
-  SampleSide(vi, pi, AcrossSteps(pi, ni, g.e_i), h.si, 1.0, ai, o, &a);
+  SampleSide(vi, pi, AcrossSteps(pi, ni, g.e_i), h.si, ai, o, &a);
   const std::vector<Eigen::Vector2d> across_j = AcrossSteps(pj, nj, g.e_j);
   const int rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
   FineColumns fine;

@@ -118,6 +118,12 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
             res.funnel.true_assigned = 0;
   }
 
+  // With truth: the first two observations of a line carry one simulated edge.
+  auto OnATrueEdge = [&](const Line3D& l) {
+    const auto& [v0, s0] = l.observations[0];
+    const auto& [v1, s1] = l.observations[1];
+    return Shares(labels[v0][s0], labels[v1][s1]);
+  };
   const auto z_range = SceneHeightRange(block, o.height_margin_m);
   t0 = std::chrono::steady_clock::now();
   std::vector<Verified> hyps;
@@ -305,7 +311,6 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     for (size_t n = 0; n < items.size(); ++n)
       if (!unique[n]) items[n].keys.clear();
   }
-  res.funnel.unambiguous = 0;
   for (size_t n = 0; n < items.size(); ++n)
     if (!items[n].keys.empty()) {
       ++res.funnel.unambiguous;
@@ -431,10 +436,10 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     // bundle adjustment; but only while the verification's minimum support
     // remains besides the matched pair (observations 0 and 1), so that a
     // wrong pair cannot shed the views that contradict it.
-    const int min_views = 2 + std::max(1, o.min_support_segments);
+    const int min_observations = 2 + std::max(1, o.min_support_segments);
     tbb::parallel_for(size_t{0}, res.lines.size(), [&](size_t k) {
       Line3D& l = res.lines[k];
-      while (!consistent_fit(l) && l.Views() > min_views) {
+      while (!consistent_fit(l) && l.Views() > min_observations) {
         size_t worst = 2;
         double worst_r2 = -1;
         for (size_t m = 2; m < l.observations.size(); ++m) {
@@ -459,11 +464,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
         continue;
       }
       ++res.funnel.residual_rejected;
-      if (truth) {
-        const auto& [v0, s0] = l.observations[0];
-        const auto& [v1, s1] = l.observations[1];
-        res.funnel.residual_rejected_true += Shares(labels[v0][s0], labels[v1][s1]);
-      }
+      if (truth) res.funnel.residual_rejected_true += OnATrueEdge(l);
     }
     res.lines = std::move(consistent);
   }
@@ -475,11 +476,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     res.funnel.junction_horizontal = jc.horizontal;
     if (truth) {
       res.funnel.junction_true = 0;
-      for (const Line3D& l : jc.lines) {
-        const auto& [v0, s0] = l.observations[0];
-        const auto& [v1, s1] = l.observations[1];
-        res.funnel.junction_true += Shares(labels[v0][s0], labels[v1][s1]);
-      }
+      for (const Line3D& l : jc.lines) res.funnel.junction_true += OnATrueEdge(l);
     }
     for (Line3D& l : jc.lines) res.lines.push_back(std::move(l));
   }

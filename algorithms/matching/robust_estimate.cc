@@ -20,18 +20,6 @@ struct MeanCov {
   Eigen::Matrix2d cov;
 };
 
-MeanCov Estimate(const std::vector<Eigen::Vector2d>& pts, const std::vector<int>& idx) {
-  MeanCov r{Eigen::Vector2d::Zero(), Eigen::Matrix2d::Zero()};
-  for (int i : idx) r.mean += pts[i];
-  r.mean /= static_cast<double>(idx.size());
-  for (int i : idx) {
-    const Eigen::Vector2d d = pts[i] - r.mean;
-    r.cov += d * d.transpose();
-  }
-  r.cov /= std::max<double>(1.0, static_cast<double>(idx.size()) - 1.0);
-  return r;
-}
-
 // Regularised so that flat colour regions (all pixels equal after
 // quantisation) still have an invertible scatter.
 void Regularise(Eigen::Matrix2d* cov) { *cov += Eigen::Matrix2d::Identity() * 1e-4; }
@@ -205,7 +193,9 @@ Robust2D RobustMcd2D(const std::vector<Eigen::Vector2d>& pts, unsigned seed, int
       const int k = static_cast<int>(SplitMix(&rng) % static_cast<uint64_t>(n));
       if (std::find(idx.begin(), idx.end(), k) == idx.end()) idx.push_back(k);
     }
-    started.push_back(c_steps(Estimate(pts, idx), 2));
+    std::fill(take.begin(), take.end(), 0);
+    for (int k : idx) take[k] = 1;
+    started.push_back(c_steps(EstimateMarked(pts, take), 2));
   }
   std::stable_sort(started.begin(), started.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
