@@ -67,7 +67,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "field giving each footprint's id (default: id, identificatie, gml_id or fid, else "
               "the FID)")
       .Option("-min_height", &r.assembly.min_height_m, "M",
-              "lowest roof plane above the ground (default 2.5)")
+              "lowest roof plane above the ground (default 2.0)")
       .Option("-footprint_min_height", &r.assembly.footprint_min_height_m, "M",
               "... over a footprint, when footprints are given (default 1.5)")
       .Option("-max_slope", &r.assembly.max_roof_slope_deg, "DEG",

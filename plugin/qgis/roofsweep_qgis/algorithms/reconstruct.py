@@ -43,7 +43,7 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             self.FOOTPRINT_ID, self.tr("Footprint id field (default: id, identificatie, gml_id or fid)"),
             parentLayerParameterName=self.FOOTPRINTS, optional=True))
         min_height = QgsProcessingParameterNumber(self.MIN_HEIGHT, self.tr("Lowest roof above the ground (m)"),
-                                                  QgsProcessingParameterNumber.Double, 2.5, minValue=0.0)
+                                                  QgsProcessingParameterNumber.Double, 2.0, minValue=0.0)
         min_height.setFlags(min_height.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
         self.addParameter(min_height)
         self.addOutput(QgsProcessingOutputMultipleLayers(self.LAYERS, self.tr("Loaded layers")))
