@@ -183,6 +183,31 @@ bool PlanesMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p, const RoofPl
   return std::abs(PlaneZ(p.plane, c) - PlaneZ(q.plane, c)) <= o.max_step_m;
 }
 
+// Two supporting lines that form a right-angled corner in plan (see
+// AssemblyOptions::keep_right_corners).
+bool HasRightCorner(const RoofPlaneHypothesis& p, const AssemblyOptions& o) {
+  const double max_cos = std::sin(o.corner_max_angle_deg * kDeg);
+  const auto& l = p.lines_xy;
+  for (size_t i = 0; i < l.size(); ++i) {
+    const Eigen::Vector2d di = l[i][1] - l[i][0];
+    if (di.norm() < o.corner_min_arm_m) continue;
+    for (size_t j = i + 1; j < l.size(); ++j) {
+      const Eigen::Vector2d dj = l[j][1] - l[j][0];
+      if (dj.norm() < o.corner_min_arm_m) continue;
+      if (std::abs(di.normalized().dot(dj.normalized())) > max_cos) continue;
+      // Crossing of the two infinite lines; the angle test keeps it finite.
+      const double den = di.x() * dj.y() - di.y() * dj.x();
+      const Eigen::Vector2d w = l[j][0] - l[i][0];
+      const double t = (w.x() * dj.y() - w.y() * dj.x()) / den;
+      const Eigen::Vector2d x = l[i][0] + t * di;
+      if (PointSegmentDistance(x, l[i][0], l[i][1]) <= o.adjacency_gap_m &&
+          PointSegmentDistance(x, l[j][0], l[j][1]) <= o.adjacency_gap_m)
+        return true;
+    }
+  }
+  return false;
+}
+
 // Plausible roof planes of the input, with the reasons for the others.
 std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& o,
@@ -228,7 +253,8 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
     keep.push_back(i);
   }
   // Short-lined planes that meet a plausible plane: dormers, hip ends,
-  // porches. A hedge, a car or a tree crown does not join a roof.
+  // porches. A hedge, a car or a tree crown does not join a roof, nor
+  // draws a square corner as a garage does.
   const size_t n_keep = keep.size();
   for (int i : attached) {
     const RoofPlaneHypothesis& p = planes[i];
@@ -238,12 +264,12 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
       const RoofPlaneHypothesis& q = planes[keep[k]];
       joins = PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o);
     }
-    if (joins) {
+    if (joins || (o.keep_right_corners && HasRightCorner(p, o))) {
       keep.push_back(i);
     } else {
       rejected->push_back((p.id.empty() ? StrFormat("plane %d", i) : p.id) +
-                          StrFormat(": longest supporting line %.2f m < %.2f m, and it joins no "
-                                    "roof plane",
+                          StrFormat(": longest supporting line %.2f m < %.2f m, it joins no "
+                                    "roof plane and has no right-angled corner",
                                     p.longest_line_m, o.min_line_length_m));
     }
   }

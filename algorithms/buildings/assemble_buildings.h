@@ -53,6 +53,15 @@ struct AssemblyOptions {
   // dormers, hip ends and porches of 1-7 m2 have lines of 2-3 m (14 true
   // faces of `realistic` seed 1 from true edges were lost to the 3 m).
   double min_attached_line_length_m = 1.5;
+  // ... or when two of its lines, each at least corner_min_arm_m long,
+  // meet at a right angle (within corner_max_angle_deg, their crossing
+  // within adjacency_gap_m of both): garages and sheds of 2-3 m stand
+  // alone, and tree crowns, hedges and shadows do not draw square corners
+  // (on the six eval blocks from matched lines, 23 of the 26 short-lined
+  // planes this keeps were true, against 15 of 53 among the others).
+  bool keep_right_corners = true;
+  double corner_min_arm_m = 1.0;
+  double corner_max_angle_deg = 10.0;
   // Two patches belong to one building when they come within adjacency_gap_m
   // of each other in plan view and their planes meet there (height
   // difference below max_step_m): a lower neighbour across a party wall is a

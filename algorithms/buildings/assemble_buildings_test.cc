@@ -165,6 +165,39 @@ TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
   EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
 }
 
+TEST(AssembleBuildings, AShortLinedPlaneStandsAloneWhenItsLinesMakeASquareCorner) {
+  // A lone garage, 2.6 x 2.6 m, flat roof at 2.3 m, its outline seen as
+  // lines of 2.5 m: no roof to join, but two lines meet at a right angle.
+  RoofPlaneHypothesis garage =
+      Hyp(Eigen::Vector4d(0, 0, 1, -2.3), {{0, 0}, {2.6, 0}, {2.6, 2.6}, {0, 2.6}});
+  garage.longest_line_m = 2.5;
+  garage.lines_xy = {{Eigen::Vector2d(0.05, 0), Eigen::Vector2d(2.55, 0)},
+                     {Eigen::Vector2d(2.6, 0.1), Eigen::Vector2d(2.6, 2.5)}};
+  AssemblyResult r = AssembleBuildings({garage}, Flat(0));
+  EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_NEAR(r.model.buildings[0].measured_height, 2.3, 1e-9);
+  ExpectAllValid(r);
+  // Lines that cross at 45 deg, or at a right angle 3 m away from both
+  // (two edges of a tree crown's shadow), make no corner.
+  for (const auto& second :
+       {std::array<Eigen::Vector2d, 2>{Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(2.2, 2.2)},
+        std::array<Eigen::Vector2d, 2>{Eigen::Vector2d(5.6, 3), Eigen::Vector2d(5.6, 5)}}) {
+    garage.lines_xy[1] = second;
+    r = AssembleBuildings({garage}, Flat(0));
+    ASSERT_EQ(r.rejected.size(), 1u);
+    EXPECT_NE(r.rejected[0].find("no right-angled corner"), std::string::npos) << r.rejected[0];
+    EXPECT_TRUE(r.model.buildings.empty());
+  }
+  // Arms shorter than corner_min_arm_m do not count either.
+  garage.lines_xy[1] = {Eigen::Vector2d(2.6, 0.1), Eigen::Vector2d(2.6, 0.9)};
+  EXPECT_TRUE(AssembleBuildings({garage}, Flat(0)).model.buildings.empty());
+  AssemblyOptions off;
+  off.keep_right_corners = false;
+  garage.lines_xy[1] = {Eigen::Vector2d(2.6, 0.1), Eigen::Vector2d(2.6, 2.5)};
+  EXPECT_TRUE(AssembleBuildings({garage}, Flat(0), off).model.buildings.empty());
+}
+
 TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {
   // A false steep plane seen only over a small patch at the gable's corner
   // would, in a plain lower envelope, slice off most of the roof.
