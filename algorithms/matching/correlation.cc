@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace roofsweep {
@@ -186,7 +187,13 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
   SampleFine(vj, pj, across_j, h.sj, (o.region_offset + 0.5) / widest,
              (o.region_offset + 0.5 + rows - 1) * widest, &fine);
   const int half = std::max(1, static_cast<int>(std::lround(o.ncc_window / o.sample_step / 2)));
-  std::vector<float> x1, x2, y1, y2;
+  const bool grey = vi.grey || vj.grey;
+  // Per column the sums of both bands over the rows valid in both strips,
+  // accumulated over the columns: each window's sums are then a difference
+  // (the windows overlap by half, and the gather into per-window arrays
+  // cost more than the correlation itself).
+  enum { kN, kX1, kY1, kX1X1, kY1Y1, kX1Y1, kX2, kY2, kX2X2, kY2Y2, kX2Y2, kSums };
+  std::vector<std::array<double, kSums>> prefix(a.cols + 1);
   double best = -9;
   const int steps = std::max(1, o.scale_steps);
   for (int k = 0; k < steps; ++k) {
@@ -194,28 +201,36 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
     const double e = steps == 1 ? 0.0 : -1.0 + 2.0 * k / (steps - 1);
     const double scale = std::pow(o.max_scale, e);
     StripFromFine(fine, vj, scale, aj, o, &b);
+    prefix[0].fill(0.0);
+    for (int w = 0; w < a.cols; ++w) {
+      std::array<double, kSums> c{};
+      for (int m = 0; m < a.rows; ++m) {
+        const int idx = m * a.cols + w;
+        if (!a.valid[idx] || !b.valid[idx]) continue;
+        const double x1 = a.b1[idx], y1 = b.b1[idx], x2 = a.b2[idx], y2 = b.b2[idx];
+        c[kN] += 1;
+        c[kX1] += x1, c[kY1] += y1, c[kX1X1] += x1 * x1, c[kY1Y1] += y1 * y1, c[kX1Y1] += x1 * y1;
+        c[kX2] += x2, c[kY2] += y2, c[kX2X2] += x2 * x2, c[kY2Y2] += y2 * y2, c[kX2Y2] += x2 * y2;
+      }
+      for (int q = 0; q < kSums; ++q) prefix[w + 1][q] = prefix[w][q] + c[q];
+    }
+    // Ncc() from sums, with its rule that quantisation-level variance is
+    // no texture.
+    auto ncc = [](double n, double sx, double sy, double sxx, double syy, double sxy) {
+      const double vxx = sxx - sx * sx / n, vyy = syy - sy * sy / n, vxy = sxy - sx * sy / n;
+      if (vxx < 1e-6 * n || vyy < 1e-6 * n) return 0.0;
+      return vxy / std::sqrt(vxx * vyy);
+    };
     double sum = 0;
     int windows = 0;
     for (int u = 0; u < a.cols; u += std::max(1, half)) {
-      x1.clear();
-      x2.clear();
-      y1.clear();
-      y2.clear();
-      for (int w = std::max(0, u - half); w <= std::min(a.cols - 1, u + half); ++w)
-        for (int m = 0; m < a.rows; ++m) {
-          const int idx = m * a.cols + w;
-          if (!a.valid[idx] || !b.valid[idx]) continue;
-          x1.push_back(a.b1[idx]);
-          y1.push_back(b.b1[idx]);
-          x2.push_back(a.b2[idx]);
-          y2.push_back(b.b2[idx]);
-        }
-      if (x1.size() < 10) continue;
-      const int cnt = static_cast<int>(x1.size());
-      const double hv = vi.grey || vj.grey
-                            ? 2.0 * Ncc(x1.data(), y1.data(), cnt)
-                            : Ncc(x1.data(), y1.data(), cnt) + Ncc(x2.data(), y2.data(), cnt);
-      sum += hv;
+      const auto& hi = prefix[std::min(a.cols - 1, u + half) + 1];
+      const auto& lo = prefix[std::max(0, u - half)];
+      double t[kSums];
+      for (int q = 0; q < kSums; ++q) t[q] = hi[q] - lo[q];
+      if (t[kN] < 10) continue;
+      const double c1 = ncc(t[kN], t[kX1], t[kY1], t[kX1X1], t[kY1Y1], t[kX1Y1]);
+      sum += grey ? 2.0 * c1 : c1 + ncc(t[kN], t[kX2], t[kY2], t[kX2X2], t[kY2Y2], t[kX2Y2]);
       ++windows;
     }
     if (windows > 0) best = std::max(best, sum / windows);
