@@ -550,6 +550,34 @@ TEST(FootprintCompletion, TerraceNeighboursShareTheirRoofPlanes) {
   EXPECT_GT(next[0].plane.head<3>().dot(back.head<3>()), 0.999);
 }
 
+TEST(FootprintCompletion, BareFootprintsGetAFlatRoofHypothesis) {
+  // A house covered by its gable, and a garage (L-shaped shed) that only a
+  // sliver of a neighbouring plane reaches.
+  const std::vector<Footprint> fps = {
+      Fp("house", {{0, 0}, {10, 0}, {10, 8}, {0, 8}}),
+      Fp("garage", {{12, 0}, {15, 0}, {15, 3}, {13.5, 3}, {13.5, 5}, {12, 5}})};
+  std::vector<RoofPlaneHypothesis> planes = Gable();
+  planes.push_back(Hyp(Eigen::Vector4d(0, 0, 1, -3), {{9, 0}, {12.5, 0}, {12.5, 8}, {9, 8}}));
+  EXPECT_EQ(BareFootprints(planes, fps), std::vector<int>({1}));
+  EXPECT_EQ(BareFootprints({}, fps), std::vector<int>({0, 1}));
+  // More of the garage covered (0.5 x 5 of its 12 m2 is less than a
+  // quarter; 1.5 x 5 is more).
+  planes.back().patch = ConvexHull({{9, 0}, {13.5, 0}, {13.5, 8}, {9, 8}});
+  EXPECT_TRUE(BareFootprints(planes, fps).empty());
+
+  const RoofPlaneHypothesis flat = FlatRoofOver(fps[1], 2.4);
+  EXPECT_EQ(flat.plane, Eigen::Vector4d(0, 0, 1, -2.4));
+  EXPECT_TRUE(flat.derived);
+  EXPECT_NEAR(std::abs(SignedArea(flat.patch)), 15 - 0.5 * 1.5 * 2, 1e-9);  // the hull
+  EXPECT_NEAR(flat.longest_line_m, 5, 1e-9);
+  EXPECT_NE(flat.id.find("garage"), std::string::npos);
+  // Over its footprint the flat roof makes a building on its own.
+  const AssemblyResult r = AssembleBuildings({flat}, Flat(0), AssemblyOptions(), {fps[1]});
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_NEAR(r.model.buildings[0].measured_height, 2.4, 1e-9);
+  ExpectAllValid(r);
+}
+
 TEST(Polygon2, IntersectNonConvex) {
   const Ring2 l = {{0, 0}, {12, 0}, {12, 5}, {5, 5}, {5, 12}, {0, 12}};
   EXPECT_FALSE(IsConvexRing(l));

@@ -96,4 +96,36 @@ std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
   return out;
 }
 
+std::vector<int> BareFootprints(const std::vector<RoofPlaneHypothesis>& planes,
+                                const std::vector<Footprint>& footprints, double min_cover) {
+  std::vector<Eigen::Vector4d> pb(planes.size());
+  for (size_t i = 0; i < planes.size(); ++i) pb[i] = RingBounds(planes[i].patch);
+  std::vector<int> bare;
+  for (size_t f = 0; f < footprints.size(); ++f) {
+    const Ring2& outline = footprints[f].outline;
+    const double area = std::abs(SignedArea(outline));
+    if (!(area > 0)) continue;
+    const Eigen::Vector4d b = RingBounds(outline);
+    double covered = 0;
+    for (size_t i = 0; i < planes.size() && covered < min_cover * area; ++i) {
+      if (!BoundsMeet(pb[i], b)) continue;
+      covered += IntersectionArea(planes[i].patch, outline);
+    }
+    if (covered < min_cover * area) bare.push_back(static_cast<int>(f));
+  }
+  return bare;
+}
+
+RoofPlaneHypothesis FlatRoofOver(const Footprint& footprint, double z) {
+  RoofPlaneHypothesis h;
+  h.plane = Eigen::Vector4d(0, 0, 1, -z);
+  h.patch = ConvexHull(footprint.outline);
+  h.derived = true;
+  const Ring2& r = footprint.outline;
+  for (size_t i = 0; i < r.size(); ++i)
+    h.longest_line_m = std::max(h.longest_line_m, (r[(i + 1) % r.size()] - r[i]).norm());
+  h.id = StrFormat("flat roof over footprint %s", footprint.id.c_str());
+  return h;
+}
+
 }  // namespace roofsweep

@@ -161,11 +161,7 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
   return s;
 }
 
-}  // namespace
-
-std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vector<cv::Mat>& images,
-                                            const std::vector<RoofPlaneHypothesis>& planes,
-                                            const VerifyOptions& o, Progress& progress) {
+std::vector<cv::Mat> GreyImages(const std::vector<cv::Mat>& images) {
   std::vector<cv::Mat> grey(images.size());
   tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
     if (images[v].channels() == 3)
@@ -173,10 +169,81 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     else
       grey[v] = images[v];
   });
-  if (!(o.spacing_m > 0) || !std::isfinite(o.spacing_m))
-    throw Error("VerifyOptions: spacing_m must be > 0");
+  return grey;
+}
+
+// Plan-view grid points inside a convex patch, refined for small patches
+// (see VerifyOptions::min_spacing_m).
+std::vector<Eigen::Vector3d> PatchSamples(const Ring2& patch, const VerifyOptions& o) {
   // A grid finer than 1 cm adds no pixels at any aerial GSD, only time.
   const double min_spacing = std::max(o.min_spacing_m, 0.01);
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto& q : patch)
+    x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
+    y1 = std::max(y1, q.y());
+  std::vector<Eigen::Vector3d> samples;
+  for (double spacing = o.spacing_m;; spacing *= 0.5) {
+    samples.clear();
+    for (double y = y0 + 0.5 * spacing; y < y1; y += spacing)
+      for (double x = x0 + 0.5 * spacing; x < x1; x += spacing)
+        if (InsideConvex(patch, {x, y})) samples.emplace_back(x, y, 0.0);
+    if (static_cast<int>(samples.size()) >= 4 * o.min_samples ||
+        0.5 * spacing < min_spacing * (1 - 1e-9))
+      break;
+  }
+  return samples;
+}
+
+}  // namespace
+
+std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<cv::Mat>& images,
+                                          const std::vector<HeightSearch>& searches,
+                                          const VerifyOptions& o, int max_steps) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> out(searches.size(), nan);
+  if (searches.empty() || !(o.spacing_m > 0) || max_steps < 1) return out;
+  const std::vector<cv::Mat> grey = GreyImages(images);
+  tbb::parallel_for(size_t{0}, searches.size(), [&](size_t i) {
+    const HeightSearch& h = searches[i];
+    if (h.patch.size() < 3 || !(h.z_hi > h.z_lo)) return;
+    const std::vector<Eigen::Vector3d> samples = PatchSamples(h.patch, o);
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (const auto& q : h.patch) c += q;
+    c /= static_cast<double>(h.patch.size());
+    const double k = ParallaxPerMetre(block, {c.x(), c.y(), 0.5 * (h.z_lo + h.z_hi)});
+    if (!(k > 0)) return;
+    // The coarse pass needs only the profile's peak: a quarter of the
+    // samples find it as well at a quarter of the cost.
+    VerifyOptions coarse_o = o;
+    coarse_o.max_samples = std::max(o.min_samples, o.max_samples / 4);
+    auto score = [&](double z, const VerifyOptions& so) {
+      const Scores s = ScorePlane(block, grey, samples, Eigen::Vector4d(0, 0, 1, -z), so);
+      return s.n >= o.min_samples ? s.sum / s.n : -1.0;
+    };
+    const double step = std::max(2.0 / k, (h.z_hi - h.z_lo) / max_steps);
+    double best_z = nan, best = -1;
+    for (double z = h.z_lo; z <= h.z_hi + 1e-9; z += step) {
+      const double v = score(z, coarse_o);
+      if (v > best) best = v, best_z = z;
+    }
+    if (!(best > 0)) return;
+    const double centre = best_z;
+    best = -1;
+    for (double z = centre - step; z <= centre + step + 1e-9; z += 0.5 / k) {
+      const double v = score(z, o);
+      if (v > best) best = v, best_z = z;
+    }
+    out[i] = best_z;
+  });
+  return out;
+}
+
+std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                            const std::vector<RoofPlaneHypothesis>& planes,
+                                            const VerifyOptions& o, Progress& progress) {
+  const std::vector<cv::Mat> grey = GreyImages(images);
+  if (!(o.spacing_m > 0) || !std::isfinite(o.spacing_m))
+    throw Error("VerifyOptions: spacing_m must be > 0");
   std::vector<PlaneVerification> out(planes.size());
   ReportOrCancel(progress, 0.0, "verifying planes");
   tbb::parallel_for(size_t{0}, planes.size(), [&](size_t i) {
@@ -186,23 +253,10 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       v.reason = "degenerate patch";
       return;
     }
-    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-    for (const auto& q : p.patch)
-      x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
-      y1 = std::max(y1, q.y());
     // Small faces (dormers, hip ends, porches) hold few grid points at
     // spacing_m: the grid is refined for them, so that the texture, not the
     // grid, decides whether a face can be verified.
-    std::vector<Eigen::Vector3d> samples;
-    for (double spacing = o.spacing_m;; spacing *= 0.5) {
-      samples.clear();
-      for (double y = y0 + 0.5 * spacing; y < y1; y += spacing)
-        for (double x = x0 + 0.5 * spacing; x < x1; x += spacing)
-          if (InsideConvex(p.patch, {x, y})) samples.emplace_back(x, y, 0.0);
-      if (static_cast<int>(samples.size()) >= 4 * o.min_samples ||
-          0.5 * spacing < min_spacing * (1 - 1e-9))
-        break;
-    }
+    const std::vector<Eigen::Vector3d> samples = PatchSamples(p.patch, o);
     const Scores at = ScorePlane(block, grey, samples, p.plane, o);
     v.samples = at.n;
     if (at.n < o.min_samples) {

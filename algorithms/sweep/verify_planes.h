@@ -72,4 +72,21 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                                             const std::vector<RoofPlaneHypothesis>& planes,
                                             const VerifyOptions& options, Progress& progress);
 
+// A search for the horizontal plane over `patch` between z_lo and z_hi
+// (local frame).
+struct HeightSearch {
+  Ring2 patch;  // convex, counter-clockwise
+  double z_lo = 0, z_hi = 0;
+};
+
+// Per search, the height (local z) of the horizontal plane the views agree
+// on best: mean Cor+ as in VerifyPlanes, tried in steps of about two pixels
+// of parallax (at most max_steps of them), then refined to about half a
+// pixel around the best. NaN where no height could be scored. The result
+// is a hypothesis only: VerifyPlanes decides on it. Parallel over the
+// searches, deterministic.
+std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<cv::Mat>& images,
+                                          const std::vector<HeightSearch>& searches,
+                                          const VerifyOptions& options, int max_steps = 400);
+
 }  // namespace roofsweep

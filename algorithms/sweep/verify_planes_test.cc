@@ -107,5 +107,38 @@ TEST(VerifyPlanes, UntexturedPatchCannotBeVerified) {
   EXPECT_NE(v[0].reason.find("cannot be verified"), std::string::npos) << v[0].reason;
 }
 
+TEST(BestHorizontalHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
+  // A flat textured roof, 8 x 6 m, at z = 4.3 over the textured ground.
+  TestScene scene;
+  Quad roof;
+  roof.origin = {-4, 0, 4.3};
+  roof.u = {8, 0, 0};
+  roof.v = {0, 6, 0};
+  roof.seed = 7;
+  scene.quads = {roof};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  HeightSearch over_roof;
+  over_roof.patch = {{-3.5, 0.5}, {3.5, 0.5}, {3.5, 5.5}, {-3.5, 5.5}};
+  over_roof.z_lo = 1.5;
+  over_roof.z_hi = 20;
+  HeightSearch empty_range = over_roof;
+  empty_range.z_hi = empty_range.z_lo;  // nothing to search
+  const std::vector<double> z =
+      BestHorizontalHeights(block, images, {over_roof, empty_range}, VerifyOptions());
+  ASSERT_EQ(z.size(), 2u);
+  // Half a pixel of parallax is about 0.1 m here.
+  EXPECT_NEAR(z[0], 4.3, 0.15);
+  EXPECT_TRUE(std::isnan(z[1]));
+  // The height found passes the verification.
+  RoofPlaneHypothesis h;
+  h.plane = Eigen::Vector4d(0, 0, 1, -z[0]);
+  h.patch = over_roof.patch;
+  NullProgress progress;
+  const auto v = VerifyPlanes(block, images, {h}, VerifyOptions(), progress);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_TRUE(v[0].accepted) << v[0].reason;
+}
+
 }  // namespace
 }  // namespace roofsweep

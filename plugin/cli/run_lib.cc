@@ -342,6 +342,45 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
          Since(t0)});
   }
 
+  // Footprints that still carry no plane: a flat roof at the height the
+  // views agree on best, verified like any plane (garages, sheds and flat
+  // roofs whose edges gave too few lines for the sweep).
+  if (!footprints.empty() && r.footprint_flat_roofs) {
+    t0 = Clock::now();
+    std::vector<HeightSearch> searches;
+    std::vector<int> which;
+    for (int f : BareFootprints(roof_planes, footprints)) {
+      HeightSearch h;
+      h.patch = ConvexHull(footprints[f].outline);
+      Eigen::Vector2d c = Eigen::Vector2d::Zero();
+      for (const auto& q : h.patch) c += q;
+      c /= static_cast<double>(std::max<size_t>(h.patch.size(), 1));
+      const double g = block.ground.HeightAt(c.x(), c.y());
+      if (h.patch.size() < 3 || !std::isfinite(g)) continue;
+      h.z_lo = g + r.assembly.footprint_min_height_m;
+      h.z_hi = g + block.max_building_height;
+      searches.push_back(std::move(h));
+      which.push_back(f);
+    }
+    const std::vector<double> z = BestHorizontalHeights(block, images, searches, r.verify);
+    std::vector<RoofPlaneHypothesis> flat;
+    for (size_t k = 0; k < which.size(); ++k)
+      if (std::isfinite(z[k])) flat.push_back(FlatRoofOver(footprints[which[k]], z[k]));
+    const size_t proposed = flat.size(), before = roof_planes.size();
+    SubProgress none(progress, 0.99, 0.99);
+    const std::vector<PlaneVerification> checks = VerifyPlanes(block, images, flat, r.verify, none);
+    KeepVerified(std::move(flat), checks, &roof_planes, &out.rejected);
+    const size_t confirmed = roof_planes.size() - before;
+    const std::vector<std::string> conflicts =
+        ResolveConflicts(&roof_planes, r.grouping.max_overlap);
+    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    out.stages.push_back(
+        {"flat roofs over bare footprints",
+         StrFormat("%zu of %zu footprints without a plane: %zu proposed, %zu confirmed",
+                   which.size(), footprints.size(), proposed, confirmed),
+         Since(t0)});
+  }
+
   t0 = Clock::now();
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());

@@ -44,6 +44,9 @@ struct RunRequest {
   CoplanarOptions coplanar;
   VerifyOptions verify;
   AssemblyOptions assembly;
+  // With footprints: a footprint no plane covers gets a flat roof at the
+  // height the views agree on best, if the verification confirms it.
+  bool footprint_flat_roofs = true;
 };
 
 struct RunStage {
