@@ -7,6 +7,16 @@
 #include <cmath>
 
 namespace roofsweep {
+namespace {
+
+// NCC from the centred sums of squares and products of n samples.
+double NccFromMoments(double n, double saa, double sbb, double sab) {
+  // Quantisation-level variance is no texture to correlate.
+  if (saa < 1e-6 * n || sbb < 1e-6 * n) return 0;
+  return sab / std::sqrt(saa * sbb);
+}
+
+}  // namespace
 
 double Ncc(const float* a, const float* b, int n) {
   if (n < 2) return 0;
@@ -23,9 +33,7 @@ double Ncc(const float* a, const float* b, int n) {
     sbb += db * db;
     sab += da * db;
   }
-  // Quantisation-level variance is no texture to correlate.
-  if (saa < 1e-6 * n || sbb < 1e-6 * n) return 0;
-  return sab / std::sqrt(saa * sbb);
+  return NccFromMoments(n, saa, sbb, sab);
 }
 
 namespace {
@@ -193,6 +201,9 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
   // (the windows overlap by half, and the gather into per-window arrays
   // cost more than the correlation itself).
   enum { kN, kX1, kY1, kX1X1, kY1Y1, kX1Y1, kX2, kY2, kX2X2, kY2Y2, kX2Y2, kSums };
+  auto ncc = [](double n, double sx, double sy, double sxx, double syy, double sxy) {
+    return NccFromMoments(n, sxx - sx * sx / n, syy - sy * sy / n, sxy - sx * sy / n);
+  };
   std::vector<std::array<double, kSums>> prefix(a.cols + 1);
   double best = -9;
   const int steps = std::max(1, o.scale_steps);
@@ -214,13 +225,6 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
       }
       for (int q = 0; q < kSums; ++q) prefix[w + 1][q] = prefix[w][q] + c[q];
     }
-    // Ncc() from sums, with its rule that quantisation-level variance is
-    // no texture.
-    auto ncc = [](double n, double sx, double sy, double sxx, double syy, double sxy) {
-      const double vxx = sxx - sx * sx / n, vyy = syy - sy * sy / n, vxy = sxy - sx * sy / n;
-      if (vxx < 1e-6 * n || vyy < 1e-6 * n) return 0.0;
-      return vxy / std::sqrt(vxx * vyy);
-    };
     double sum = 0;
     int windows = 0;
     for (int u = 0; u < a.cols; u += std::max(1, half)) {

@@ -352,11 +352,12 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (int f : BareFootprints(roof_planes, footprints)) {
       HeightSearch h;
       h.patch = ConvexHull(footprints[f].outline);
+      if (h.patch.size() < 3) continue;
       Eigen::Vector2d c = Eigen::Vector2d::Zero();
       for (const auto& q : h.patch) c += q;
-      c /= static_cast<double>(std::max<size_t>(h.patch.size(), 1));
+      c /= static_cast<double>(h.patch.size());
       const double g = block.ground.HeightAt(c.x(), c.y());
-      if (h.patch.size() < 3 || !std::isfinite(g)) continue;
+      if (!std::isfinite(g)) continue;
       h.z_lo = g + r.assembly.footprint_min_height_m;
       h.z_hi = g + block.max_building_height;
       searches.push_back(std::move(h));
