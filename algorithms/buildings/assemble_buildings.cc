@@ -427,6 +427,8 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
 
   Building b;
   double lines = 0, sim = 0, score = 0;
+  double reprojection_sq = 0;
+  int reprojection_lines = 0;
   std::vector<Polygon3> roof_faces;
   for (size_t k = 0; k < active.size(); ++k) {
     bool used = false;
@@ -441,6 +443,8 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
     if (!used) continue;
     const RoofPlaneHypothesis& p = planes[active[k]];
     lines += p.lines;
+    reprojection_sq += p.reprojection_lines * p.reprojection_rms_px * p.reprojection_rms_px;
+    reprojection_lines += p.reprojection_lines;
     sim += p.similarity;
     score += p.score;
   }
@@ -484,6 +488,8 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
   b.double_attributes["photometric_score"] = roof_faces.empty() ? 0.0 : sim / roof_faces.size();
   b.double_attributes["reliability"] = score;
   b.double_attributes["footprint_m2"] = SignedArea(e.outline);
+  if (reprojection_lines > 0)
+    b.double_attributes["reprojection_rms_px"] = std::sqrt(reprojection_sq / reprojection_lines);
   return b;
 }
 

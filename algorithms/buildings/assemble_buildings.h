@@ -30,6 +30,10 @@ struct RoofPlaneHypothesis {
   // the sweep over this patch: in conflicts it yields to every found plane
   // (completion fills gaps, it does not overrule direct evidence).
   bool derived = false;
+  // RMS reprojection residual (px) of those of its supporting 3D lines
+  // that have one, and how many do (0: residual unknown).
+  double reprojection_rms_px = 0;
+  int reprojection_lines = 0;
 };
 
 // Options of AssembleBuildings. Lengths in metres.
@@ -147,7 +151,11 @@ struct AssemblyResult {
 // (GroundModel at the outline, the lowest value for the whole building so
 // the ground surface is planar); the solid is closed and outward oriented
 // by construction and checked with CheckBuildingSolid. Roof type from the
-// face count and orientations. Deterministic.
+// face count and orientations. Per-building quality in double_attributes:
+// roof_planes, supporting_lines, photometric_score (mean verification score
+// of its faces), reliability, footprint_m2 and, when the lines carry one,
+// reprojection_rms_px (RMS over the lines of its faces, a line shared by two
+// faces counted twice). Deterministic.
 //
 // With footprints (local frame) planes are cut at them and only planes over
 // the same footprint form a building, which carries the footprint's id

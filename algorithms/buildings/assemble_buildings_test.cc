@@ -73,6 +73,20 @@ TEST(AssembleBuildings, GableBecomesClosedGabledSolid) {
   // Volume: footprint 80 m2 x 5.5 m walls + the prism 0.5 x 8 x 2.309 x 10.
   const double prism = 0.5 * 8 * 4 * std::tan(30 * M_PI / 180) * 10;
   EXPECT_NEAR(CheckBuildingSolid(b).signed_volume, 80 * 5.5 + prism, 1e-6);
+  EXPECT_EQ(b.double_attributes.at("supporting_lines"), 4);
+  EXPECT_NEAR(b.double_attributes.at("photometric_score"), 0.5, 1e-12);
+  // The planes' lines carried no reprojection residual: none is claimed.
+  EXPECT_EQ(b.double_attributes.count("reprojection_rms_px"), 0u);
+}
+
+TEST(AssembleBuildings, TheBuildingsResidualIsTheRmsOverTheLinesOfItsFaces) {
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in[0].reprojection_rms_px = 0.5, in[0].reprojection_lines = 2;
+  in[1].reprojection_rms_px = 1.0, in[1].reprojection_lines = 1;
+  const AssemblyResult r = AssembleBuildings(in, Flat(0.5));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_NEAR(r.model.buildings[0].double_attributes.at("reprojection_rms_px"),
+              std::sqrt((2 * 0.25 + 1 * 1.0) / 3), 1e-12);
 }
 
 TEST(AssembleBuildings, HipAndPyramid) {

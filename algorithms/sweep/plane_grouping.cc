@@ -314,10 +314,18 @@ std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& gro
     h.lines = static_cast<int>(g.lines.size());
     h.longest_line_m = g.longest_line_m;
     h.similarity = g.similarity;
+    double sq = 0;
     if (lines)
       for (int l : g.lines)
-        if (l >= 0 && l < static_cast<int>(lines->size()))
-          h.lines_xy.push_back({(*lines)[l].segment.a.head<2>(), (*lines)[l].segment.b.head<2>()});
+        if (l >= 0 && l < static_cast<int>(lines->size())) {
+          const SweepLine& s = (*lines)[l];
+          h.lines_xy.push_back({s.segment.a.head<2>(), s.segment.b.head<2>()});
+          if (std::isfinite(s.rms_px)) {
+            sq += s.rms_px * s.rms_px;
+            ++h.reprojection_lines;
+          }
+        }
+    if (h.reprojection_lines > 0) h.reprojection_rms_px = std::sqrt(sq / h.reprojection_lines);
     char buf[64];
     std::snprintf(buf, sizeof buf, "plane %zu (line %d)", k, g.lines.empty() ? -1 : g.lines[0]);
     h.id = buf;

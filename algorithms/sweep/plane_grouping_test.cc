@@ -62,6 +62,31 @@ TEST(PlaneGrouping, RidgeAndEavesBecomeTwoPlanes) {
   const std::vector<RoofPlaneHypothesis> roofs = ToRoofPlanes(r.planes);
   ASSERT_EQ(roofs.size(), 2u);
   EXPECT_EQ(roofs[0].lines, 2);
+  // Without lines (or lines without residuals) the residual is unknown.
+  EXPECT_EQ(roofs[0].reprojection_lines, 0);
+}
+
+TEST(PlaneGrouping, APlaneCarriesTheReprojectionResidualOfItsLines) {
+  Gable g;
+  g.lines[0].rms_px = 0.5;  // ridge
+  g.lines[1].rms_px = 1.0;  // south eave
+  // The north eave has none (read from a file without the field).
+  std::vector<HalfPlane> hps = {
+      Accepted(g.lines, 0, -1, g.south, 3.0), Accepted(g.lines, 0, +1, g.north, 3.5),
+      Accepted(g.lines, 1, +1, g.south, 3.0), Accepted(g.lines, 2, -1, g.north, 2.0)};
+  const GroupingResult r = GroupHalfPlanes(g.lines, hps);
+  const std::vector<RoofPlaneHypothesis> roofs = ToRoofPlanes(r.planes, &g.lines);
+  ASSERT_EQ(roofs.size(), 2u);
+  for (const RoofPlaneHypothesis& h : roofs) {
+    const Eigen::Vector3d n = h.plane.head<3>();
+    if (n.dot(g.south) > 0.999) {  // ridge and south eave
+      EXPECT_EQ(h.reprojection_lines, 2);
+      EXPECT_NEAR(h.reprojection_rms_px, std::sqrt((0.25 + 1.0) / 2), 1e-12);
+    } else {  // ridge only
+      EXPECT_EQ(h.reprojection_lines, 1);
+      EXPECT_NEAR(h.reprojection_rms_px, 0.5, 1e-12);
+    }
+  }
 }
 
 TEST(PlaneGrouping, FarApartCoplanarFacesStaySeparateAndConflictsResolve) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ namespace roofsweep {
 struct SweepLine {
   Segment3 segment;
   std::vector<int> views;
+  // Reprojection residual of the matched line (Line3D::rms_px); NaN when
+  // unknown (lines read from a file without it, true edges). Not used by
+  // the sweep; carried to the buildings' quality attributes.
+  double rms_px = std::numeric_limits<double>::quiet_NaN();
 };
 
 // One line side with its best half-plane (Baillard & Zisserman 2000, §3.4)

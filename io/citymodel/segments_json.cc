@@ -87,12 +87,14 @@ bool LooksLikeJson(const std::string& path) {
   return c == '{';
 }
 
-void AddLineString(const OGRLineString& ls, const std::string& kind, SegmentSet* set) {
+void AddLineString(const OGRLineString& ls, const std::string& kind, double rms_px,
+                   SegmentSet* set) {
   for (int i = 0; i + 1 < ls.getNumPoints(); ++i) {
     LabelledSegment s;
     s.segment.a = {ls.getX(i), ls.getY(i), ls.getZ(i)};
     s.segment.b = {ls.getX(i + 1), ls.getY(i + 1), ls.getZ(i + 1)};
     s.kind = kind;
+    s.rms_px = rms_px;
     set->segments.push_back(s);
   }
 }
@@ -130,16 +132,27 @@ SegmentSet ReadSegments(const std::string& path, const std::string& layer_name) 
     if (auth && code) set.crs = std::string(auth) + ":" + code;
   }
   const int kind_field = layer->GetLayerDefn()->GetFieldIndex("kind");
+  const int rms_field = layer->GetLayerDefn()->GetFieldIndex("rms_px");
+  const int depth_field = layer->GetLayerDefn()->GetFieldIndex("depth_from");
+  const int views_field = layer->GetLayerDefn()->GetFieldIndex("views");
   layer->ResetReading();
   for (auto& feature : *layer) {
     const OGRGeometry* g = feature->GetGeometryRef();
     if (!g) continue;
     const std::string kind = kind_field >= 0 ? feature->GetFieldAsString(kind_field) : "";
+    const bool stereo = (depth_field < 0 || !feature->IsFieldSetAndNotNull(depth_field) ||
+                         std::string(feature->GetFieldAsString(depth_field)) == "stereo") &&
+                        (views_field < 0 || !feature->IsFieldSetAndNotNull(views_field) ||
+                         feature->GetFieldAsInteger(views_field) >= 3);
+    const double rms_px = stereo && rms_field >= 0 && feature->IsFieldSetAndNotNull(rms_field)
+                              ? feature->GetFieldAsDouble(rms_field)
+                              : std::numeric_limits<double>::quiet_NaN();
     const auto t = wkbFlatten(g->getGeometryType());
     if (t == wkbLineString) {
-      AddLineString(*g->toLineString(), kind, &set);
+      AddLineString(*g->toLineString(), kind, rms_px, &set);
     } else if (t == wkbMultiLineString) {
-      for (const OGRLineString* part : *g->toMultiLineString()) AddLineString(*part, kind, &set);
+      for (const OGRLineString* part : *g->toMultiLineString())
+        AddLineString(*part, kind, rms_px, &set);
     }
   }
   return set;

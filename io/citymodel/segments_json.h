@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ struct LabelledSegment {
   Segment3 segment;
   std::string kind;
   int building = -1;
+  // Reprojection residual of a 3D line matched by stereo in three views or
+  // more (field rms_px of the lines3d layer roofsweep writes); NaN when the
+  // source gives none or says it measures nothing: a line from two views
+  // (fields views) or completed from its junctions (depth_from other than
+  // "stereo") reprojects exactly by construction.
+  double rms_px = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SegmentSet {

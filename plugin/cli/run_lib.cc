@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -163,6 +164,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (const LabelledSegment& s : given.segments) {
       Line3D l;
       l.segment = {frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)};
+      l.rms_px = s.rms_px;
       matched.lines.push_back(std::move(l));
     }
     out.stages.push_back(
@@ -206,7 +208,11 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         continue;
       }
     }
-    SweepLine s{l.segment, {}};
+    // A line from two views, or completed from its junctions, reprojects
+    // exactly by construction: its residual measures nothing.
+    const bool measured =
+        l.observations.empty() ? std::isfinite(l.rms_px) : l.Views() >= 3 && !l.from_junctions;
+    SweepLine s{l.segment, {}, measured ? l.rms_px : std::nan("")};
     for (const auto& [v, seg] : l.observations) s.views.push_back(v);
     lines.push_back(std::move(s));
   }
