@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
@@ -181,6 +182,41 @@ bool Adjacent(const std::vector<SweepLine>& lines, int i, int j, const CoplanarO
   return true;
 }
 
+// Side (+1 left of a -> b seen from above, as HalfPlane::side) of line i
+// on which line j lies; 0 when undecided (j's midpoint on i's line).
+int SideToward(const Segment3& i, const Segment3& j) {
+  const Eigen::Vector2d d = (i.b - i.a).head<2>();
+  const Eigen::Vector2d m = j.At(0.5).head<2>() - i.a.head<2>();
+  const double cross = d.x() * m.y() - d.y() * m.x();
+  return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+}
+
+// See CoplanarOptions::refuse_past_bounding_line. `sides[l]`: the
+// half-planes of line l on its sides -1 and +1 (null when not swept).
+bool RunsPastBoundingLine(const std::vector<SweepLine>& lines,
+                          const std::vector<std::array<const HalfPlane*, 2>>& sides,
+                          const PlaneGroup& g, const CoplanarOptions& o) {
+  const double cos_max = std::cos(o.max_angle_deg * kDeg);
+  const double sin_horizontal = std::sin(o.parallel_angle_deg * kDeg);
+  const auto coplanar = [&](const HalfPlane* h) {
+    return h && h->candidate && std::abs(h->plane.head<3>().dot(g.plane.head<3>())) >= cos_max;
+  };
+  for (int k = 0; k < 2; ++k) {
+    const int i = g.lines[k], j = g.lines[1 - k];
+    if (i < 0 || i >= static_cast<int>(sides.size())) continue;
+    // Only a horizontal line bounds a face this way (an eave); a sloped
+    // one inside a terraced row is the party wall's verge, with the
+    // neighbour's coplanar face beyond it.
+    if (std::abs(lines[i].segment.Direction().z()) > sin_horizontal) continue;
+    const int toward = SideToward(lines[i].segment, lines[j].segment);
+    if (toward == 0) continue;
+    const HalfPlane* facing = sides[i][toward > 0 ? 1 : 0];
+    const HalfPlane* away = sides[i][toward > 0 ? 0 : 1];
+    if (coplanar(away) && !coplanar(facing)) return true;
+  }
+  return false;
+}
+
 bool Compatible(const std::vector<SweepLine>& lines, const PlaneGroup& g, const PlaneGroup& h,
                 const CoplanarOptions& o) {
   if (g.plane.head<3>().dot(h.plane.head<3>()) < std::cos(o.max_angle_deg * kDeg)) return false;
@@ -222,7 +258,15 @@ int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGr
 
 std::vector<PlaneGroup> PlanesFromLinePairs(const std::vector<SweepLine>& lines,
                                             std::vector<PlaneGroup>* existing,
-                                            const CoplanarOptions& o) {
+                                            const CoplanarOptions& o,
+                                            const std::vector<HalfPlane>* half_planes) {
+  std::vector<std::array<const HalfPlane*, 2>> sides;
+  if (half_planes && o.refuse_past_bounding_line) {
+    sides.assign(lines.size(), {nullptr, nullptr});
+    for (const HalfPlane& h : *half_planes)
+      if (h.line >= 0 && h.line < static_cast<int>(lines.size()) && (h.side == 1 || h.side == -1))
+        sides[h.line][h.side > 0 ? 1 : 0] = &h;
+  }
   std::vector<int> usable;
   for (size_t l = 0; l < lines.size(); ++l)
     if (lines[l].segment.Length() >= o.min_line_length_m) usable.push_back(static_cast<int>(l));
@@ -242,7 +286,8 @@ std::vector<PlaneGroup> PlanesFromLinePairs(const std::vector<SweepLine>& lines,
       PlaneGroup g;
       bool parallel = false;
       if (PairPlane(lines, usable[p], usable[q], o, &g, &parallel) && !Crossed(lines, g, o) &&
-          (!parallel || Adjacent(lines, usable[p], usable[q], o)))
+          (!parallel || Adjacent(lines, usable[p], usable[q], o)) &&
+          (sides.empty() || !RunsPastBoundingLine(lines, sides, g, o)))
         pairs.push_back(std::move(g));
     }
   }

@@ -50,6 +50,14 @@ struct CoplanarOptions {
   double crossing_offset_m = 0.5;
   double crossing_fraction = 0.5;
   double crossing_min_m = 3.0;
+  // A pair is refused when one of its lines bounds this very plane on its
+  // far side: that line's half-plane facing away from the other line is a
+  // sweep candidate coplanar with the pair (within max_angle_deg), and the
+  // one facing the other line is not. The pair would continue a face the
+  // sweep found past its edge: a house's roof face continued beyond its
+  // eave onto the edge of a garage that happens to lie on the extension.
+  // Needs the half-planes (PlanesFromLinePairs' `half_planes`).
+  bool refuse_past_bounding_line = true;
 };
 
 // Adds to `planes` every line that is coplanar with a plane and within
@@ -64,8 +72,11 @@ int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGr
 // CoplanarOptions). One that is coplanar with another or with one of
 // `existing` and overlaps it by min_overlap of the smaller patch is the
 // same face: its lines join that plane instead. Deterministic.
+// `half_planes` (optional): the sweep's result over `lines`, for
+// CoplanarOptions::refuse_past_bounding_line.
 std::vector<PlaneGroup> PlanesFromLinePairs(const std::vector<SweepLine>& lines,
                                             std::vector<PlaneGroup>* existing,
-                                            const CoplanarOptions& options = {});
+                                            const CoplanarOptions& options = {},
+                                            const std::vector<HalfPlane>* half_planes = nullptr);
 
 }  // namespace roofsweep

@@ -48,6 +48,41 @@ TEST(CoplanarLines, GableGivesItsTwoFacesAndNotThePlaneThroughTheEaves) {
   EXPECT_EQ(found_north, 1);
 }
 
+TEST(CoplanarLines, AFaceIsNotContinuedPastTheEaveWhereItsSweepStops) {
+  // The south face (z = 6 + y / 2) continued 6 m past its eave meets the
+  // near edge of a garage roof at z = 3 (as on the simulated blocks, where
+  // such a pair grew into the house's face and roofed the gap).
+  std::vector<SweepLine> lines = Gable();
+  lines.push_back(L({5, -6, 3}, {9, -6, 3}));
+  const int garage = static_cast<int>(lines.size()) - 1;
+  const auto holding_garage = [&](const std::vector<PlaneGroup>& planes) {
+    return std::count_if(planes.begin(), planes.end(), [&](const PlaneGroup& p) {
+      return std::find(p.lines.begin(), p.lines.end(), garage) != p.lines.end();
+    });
+  };
+  std::vector<PlaneGroup> none;
+  EXPECT_GE(holding_garage(PlanesFromLinePairs(lines, &none)), 1);
+
+  // The sweep found the face on the eave's north side and nothing on its
+  // south side (the wall below it).
+  HalfPlane face;
+  face.line = 1;  // south eave, a -> b along +x: side +1 is north
+  face.side = +1;
+  face.plane = Eigen::Vector4d(0, -0.5, 1, -6) / std::sqrt(1.25);
+  face.candidate = face.accepted = true;
+  HalfPlane wall = face;
+  wall.side = -1;
+  wall.plane = Eigen::Vector4d(0, 0, 1, -3);
+  wall.candidate = wall.accepted = false;
+  const std::vector<HalfPlane> half_planes = {face, wall};
+  std::vector<PlaneGroup> none2;
+  const std::vector<PlaneGroup> planes = PlanesFromLinePairs(lines, &none2, {}, &half_planes);
+  EXPECT_EQ(holding_garage(planes), 0);
+  // The roof's own faces are still proposed.
+  ASSERT_EQ(planes.size(), 2u);
+  for (const PlaneGroup& p : planes) EXPECT_NEAR(std::abs(SignedArea(p.patch)), 40.0, 1e-6);
+}
+
 TEST(CoplanarLines, HipRoofGivesFourFaces) {
   // 12 x 8 m hip roof, eaves at z = 5, ridge from (4, 4) to (8, 4) at z = 7.
   const Eigen::Vector3d c00(0, 0, 5), c10(12, 0, 5), c11(12, 8, 5), c01(0, 8, 5);

@@ -276,7 +276,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   for (const HalfPlane& h : hps) candidates += h.candidate;
   int pair_planes = 0, attached = 0;
   if (r.line_planes) {
-    std::vector<PlaneGroup> pairs = PlanesFromLinePairs(lines, &grouped.planes, r.coplanar);
+    std::vector<PlaneGroup> pairs = PlanesFromLinePairs(lines, &grouped.planes, r.coplanar, &hps);
     pair_planes = static_cast<int>(pairs.size());
     for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
   }
