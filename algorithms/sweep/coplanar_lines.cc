@@ -196,7 +196,7 @@ int SideToward(const Segment3& i, const Segment3& j) {
 bool RunsPastBoundingLine(const std::vector<SweepLine>& lines,
                           const std::vector<std::array<const HalfPlane*, 2>>& sides,
                           const PlaneGroup& g, const CoplanarOptions& o) {
-  const double cos_max = std::cos(o.max_angle_deg * kDeg);
+  const double cos_max = std::cos(o.continuation_angle_deg * kDeg);
   const double sin_horizontal = std::sin(o.parallel_angle_deg * kDeg);
   const auto coplanar = [&](const HalfPlane* h) {
     return h && h->candidate && std::abs(h->plane.head<3>().dot(g.plane.head<3>())) >= cos_max;

@@ -50,14 +50,18 @@ struct CoplanarOptions {
   double crossing_offset_m = 0.5;
   double crossing_fraction = 0.5;
   double crossing_min_m = 3.0;
-  // A pair is refused when one of its lines bounds this very plane on its
-  // far side: that line's half-plane facing away from the other line is a
-  // sweep candidate coplanar with the pair (within max_angle_deg), and the
-  // one facing the other line is not. The pair would continue a face the
-  // sweep found past its edge: a house's roof face continued beyond its
-  // eave onto the edge of a garage that happens to lie on the extension.
-  // Needs the half-planes (PlanesFromLinePairs' `half_planes`).
+  // A pair is refused when one of its lines is horizontal and bounds this
+  // plane on its far side: that line's half-plane facing away from the
+  // other line is a sweep candidate within continuation_angle_deg of the
+  // pair's plane, and the one facing the other line is not. The pair would
+  // continue a face the sweep found past its edge: a house's roof face
+  // continued beyond its eave onto the edge of a garage near its extension
+  // (on `realistic` s1 the pair was 5 deg steeper than the face). The two
+  // faces of a ridge differ by twice the pitch, 20 deg and more above a
+  // 10 deg pitch, so a ridge does not count as a face continued. Needs the
+  // half-planes (PlanesFromLinePairs' `half_planes`).
   bool refuse_past_bounding_line = true;
+  double continuation_angle_deg = 10.0;
 };
 
 // Adds to `planes` every line that is coplanar with a plane and within

@@ -49,38 +49,61 @@ TEST(CoplanarLines, GableGivesItsTwoFacesAndNotThePlaneThroughTheEaves) {
 }
 
 TEST(CoplanarLines, AFaceIsNotContinuedPastTheEaveWhereItsSweepStops) {
-  // The south face (z = 6 + y / 2) continued 6 m past its eave meets the
-  // near edge of a garage roof at z = 3 (as on the simulated blocks, where
-  // such a pair grew into the house's face and roofed the gap).
-  std::vector<SweepLine> lines = Gable();
-  lines.push_back(L({5, -6, 3}, {9, -6, 3}));
-  const int garage = static_cast<int>(lines.size()) - 1;
-  const auto holding_garage = [&](const std::vector<PlaneGroup>& planes) {
-    return std::count_if(planes.begin(), planes.end(), [&](const PlaneGroup& p) {
-      return std::find(p.lines.begin(), p.lines.end(), garage) != p.lines.end();
-    });
-  };
-  std::vector<PlaneGroup> none;
-  EXPECT_GE(holding_garage(PlanesFromLinePairs(lines, &none)), 1);
+  // The south face (z = 6 + y / 2, 26.6 deg) continued 6 m past its eave
+  // meets the near edge of a garage roof, on the extension (z = 3) or a
+  // little below it (z = 2.25: the pair is 5.4 deg steeper), as on the
+  // simulated blocks, where such a pair grew into the house's face and
+  // roofed the gap.
+  for (const double garage_z : {3.0, 2.25}) {
+    SCOPED_TRACE(garage_z);
+    std::vector<SweepLine> lines = Gable();
+    lines.push_back(L({5, -6, garage_z}, {9, -6, garage_z}));
+    const int garage = static_cast<int>(lines.size()) - 1;
+    const auto holding_garage = [&](const std::vector<PlaneGroup>& planes) {
+      return std::count_if(planes.begin(), planes.end(), [&](const PlaneGroup& p) {
+        return std::find(p.lines.begin(), p.lines.end(), garage) != p.lines.end();
+      });
+    };
+    std::vector<PlaneGroup> none;
+    EXPECT_GE(holding_garage(PlanesFromLinePairs(lines, &none)), 1);
 
-  // The sweep found the face on the eave's north side and nothing on its
-  // south side (the wall below it).
-  HalfPlane face;
-  face.line = 1;  // south eave, a -> b along +x: side +1 is north
-  face.side = +1;
-  face.plane = Eigen::Vector4d(0, -0.5, 1, -6) / std::sqrt(1.25);
-  face.candidate = face.accepted = true;
-  HalfPlane wall = face;
-  wall.side = -1;
-  wall.plane = Eigen::Vector4d(0, 0, 1, -3);
-  wall.candidate = wall.accepted = false;
-  const std::vector<HalfPlane> half_planes = {face, wall};
-  std::vector<PlaneGroup> none2;
-  const std::vector<PlaneGroup> planes = PlanesFromLinePairs(lines, &none2, {}, &half_planes);
-  EXPECT_EQ(holding_garage(planes), 0);
-  // The roof's own faces are still proposed.
-  ASSERT_EQ(planes.size(), 2u);
-  for (const PlaneGroup& p : planes) EXPECT_NEAR(std::abs(SignedArea(p.patch)), 40.0, 1e-6);
+    // The sweep found the face on the eave's north side and nothing on its
+    // south side (the wall below it).
+    HalfPlane face;
+    face.line = 1;  // south eave, a -> b along +x: side +1 is north
+    face.side = +1;
+    face.plane = Eigen::Vector4d(0, -0.5, 1, -6) / std::sqrt(1.25);
+    face.candidate = face.accepted = true;
+    HalfPlane wall = face;
+    wall.side = -1;
+    wall.plane = Eigen::Vector4d(0, 0, 1, -3);
+    wall.candidate = wall.accepted = false;
+    const std::vector<HalfPlane> half_planes = {face, wall};
+    std::vector<PlaneGroup> none2;
+    const std::vector<PlaneGroup> planes = PlanesFromLinePairs(lines, &none2, {}, &half_planes);
+    EXPECT_EQ(holding_garage(planes), 0);
+    // The roof's own faces are still proposed.
+    ASSERT_EQ(planes.size(), 2u);
+    for (const PlaneGroup& p : planes) EXPECT_NEAR(std::abs(SignedArea(p.patch)), 40.0, 1e-6);
+  }
+}
+
+TEST(CoplanarLines, ARidgeIsNotAFaceContinued) {
+  // Only the north face was found by the sweep (on the ridge's north side):
+  // the pair of ridge and south eave still proposes the south face, 53 deg
+  // from the north one.
+  const std::vector<SweepLine> lines = Gable();
+  HalfPlane north;
+  north.line = 0;  // ridge, a -> b along +x: side +1 is north
+  north.side = +1;
+  north.plane = Eigen::Vector4d(0, 0.5, 1, -10) / std::sqrt(1.25);
+  north.candidate = north.accepted = true;
+  const std::vector<HalfPlane> half_planes = {north};
+  std::vector<PlaneGroup> none;
+  const std::vector<PlaneGroup> planes = PlanesFromLinePairs(lines, &none, {}, &half_planes);
+  int south = 0;
+  for (const PlaneGroup& p : planes) south += AngleDeg(p.plane, {0, -2, 4}) < 0.01;
+  EXPECT_EQ(south, 1);
 }
 
 TEST(CoplanarLines, HipRoofGivesFourFaces) {
