@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <opencv2/imgproc.hpp>
+#include <unordered_map>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
@@ -57,6 +58,9 @@ double ParallaxPerMetre(const Block& block, const Eigen::Vector3d& X) {
 struct Scores {
   double sum = 0;
   int n = 0;
+  // Per textured sample: its index in the visiting order and its Cor+, so
+  // that two planes can be compared on the same samples.
+  std::vector<std::pair<size_t, double>> values;
 };
 
 // Mean Cor+ of the samples for one plane; samples whose reference window
@@ -157,8 +161,28 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
     if (point_n == 0) continue;
     s.sum += point_sum / point_n;
     ++s.n;
+    s.values.emplace_back(j, point_sum / point_n);
   }
   return s;
+}
+
+// Mean and standard error of Cor+(a) - Cor+(b) over the samples both
+// scored; false when fewer than two are common.
+bool PairedDifference(const Scores& a, const Scores& b, double* mean, double* se) {
+  std::unordered_map<size_t, double> of_b;
+  for (const auto& [j, c] : b.values) of_b.emplace(j, c);
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (const auto& [j, c] : a.values) {
+    const auto it = of_b.find(j);
+    if (it == of_b.end()) continue;
+    const double d = c - it->second;
+    sum += d, sum2 += d * d, ++n;
+  }
+  if (n < 2) return false;
+  *mean = sum / n;
+  *se = std::sqrt(std::max(0.0, (sum2 - n * *mean * *mean) / (n - 1)) / n);
+  return true;
 }
 
 std::vector<cv::Mat> GreyImages(const std::vector<cv::Mat>& images) {
@@ -286,6 +310,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // the patch's farthest point along x (then y) moves by the offset; they
     // catch a wrong slope that a height shift cannot.
     const double zc = PlaneZ(p.plane, c.x(), c.y());
+    Scores best_tilt;
     const double alpha = -p.plane[0] / p.plane[2], beta = -p.plane[1] / p.plane[2];
     for (int axis = 0; axis < 2; ++axis) {
       double reach = 0;
@@ -300,9 +325,19 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
         n /= norm;
         const Eigen::Vector4d tilted(n.x(), n.y(), n.z(),
                                      -n.dot(Eigen::Vector3d(c.x(), c.y(), zc)));
-        const Scores t = ScorePlane(block, grey, samples, tilted, o);
-        v.score_tilted = std::max(v.score_tilted, t.n ? t.sum / t.n : 0.0);
+        Scores t = ScorePlane(block, grey, samples, tilted, o);
+        const double ts = t.n ? t.sum / t.n : 0.0;
+        if (ts > v.score_tilted || best_tilt.values.empty()) best_tilt = std::move(t);
+        v.score_tilted = std::max(v.score_tilted, ts);
       }
+    }
+    // The best tilted plane against this one on the samples both scored:
+    // each plane's own textured samples differ a little (the reference
+    // window moves with the plane), and the difference of two noisy means
+    // over different samples refused true planes on a tie.
+    if (!PairedDifference(at, best_tilt, &v.tilt_difference, &v.tilt_se)) {
+      v.tilt_difference = v.score - v.score_tilted;
+      v.tilt_se = 0;
     }
     char buf[200];
     if (v.score < o.min_score) {
@@ -315,11 +350,11 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                     v.score, v.offset_m, v.score_below > v.score_above ? "lower" : "higher",
                     std::max(v.score_below, v.score_above), o.min_margin);
       v.reason = buf;
-    } else if (v.score < v.score_tilted + o.min_tilt_margin) {
+    } else if (v.tilt_difference < o.min_tilt_margin - o.tilt_z * v.tilt_se) {
       std::snprintf(buf, sizeof buf,
-                    "slope not confirmed: score %.2f, tilted by %.1f m at the edge %.2f (margin "
-                    "%.2f needed)",
-                    v.score, v.offset_m, v.score_tilted, o.min_tilt_margin);
+                    "slope not confirmed: score %.2f, tilted by %.1f m at the edge %.2f (on the "
+                    "same samples %+.3f, standard error %.3f)",
+                    v.score, v.offset_m, v.score_tilted, v.tilt_difference, v.tilt_se);
       v.reason = buf;
     } else {
       v.accepted = true;

@@ -60,6 +60,15 @@ TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
   EXPECT_GT(v[0].score, std::max(v[0].score_below, v[0].score_above) + 0.1);
   EXPECT_GT(v[0].offset_m, 0.25);  // from the block's parallax, not a constant
   EXPECT_GE(v[0].samples, 32);
+  // Against the best tilted plane on the same samples: a clear gain,
+  // measured (a standard error from the pairs, not the fallback of 0).
+  EXPECT_GT(v[0].tilt_se, 0);
+  EXPECT_GT(v[0].tilt_difference, v[0].tilt_se);
+  // The plane 15 deg off is refused by the slope test: a tilted plane
+  // beats it on the same samples by many standard errors (measured: -0.036,
+  // standard error 0.002).
+  EXPECT_EQ(v[2].reason.rfind("slope not confirmed", 0), 0u) << v[2].reason;
+  EXPECT_LT(v[2].tilt_difference, -VerifyOptions{}.tilt_z * v[2].tilt_se);
   for (int k : {1, 2}) {
     EXPECT_FALSE(v[k].accepted) << k << ": score " << v[k].score << " below " << v[k].score_below
                                 << " above " << v[k].score_above << " offset " << v[k].offset_m
