@@ -14,6 +14,7 @@
 
 #include "algorithms/buildings/polygon2.h"
 #include "algorithms/core/error.h"
+#include "io/core/crs_identity.h"
 #include "io/core/crs_transform.h"
 #include "io/core/gdal_util.h"
 
@@ -87,17 +88,6 @@ OGRLayer* SelectLayer(GDALDataset& ds, const std::string& path, const std::strin
 // The horizontal part of a CRS (a compound CRS without its vertical CRS, a
 // 3D CRS demoted to 2D, as roofsweep's own GPKG layers are 3D): footprints
 // are plan-view outlines, their heights are not used.
-std::unique_ptr<OGRSpatialReference> Horizontal(const OGRSpatialReference& srs) {
-  auto h = std::make_unique<OGRSpatialReference>(srs);
-  if (h->IsCompound()) {
-    h->StripVertical();
-  } else if (h->GetAxesCount() > 2) {
-    h->DemoteTo2D(nullptr);
-  }
-  h->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  return h;
-}
-
 // The GeoPackage's placeholders for "no CRS" (srs_id 0 and -1, which GDAL
 // reports as CRSs on an unknown datum): no CRS.
 bool IsUndefined(const OGRSpatialReference& srs) {
@@ -281,8 +271,8 @@ class Reader {
                          "cannot read the block CRS '" + options_.block_crs + "' (" +
                              quiet.Message("GDAL does not know it") + ")"));
     }
-    const auto layer_h = Horizontal(*srs);
-    const auto block_h = Horizontal(block);
+    const auto layer_h = HorizontalCrs(*srs);
+    const auto block_h = HorizontalCrs(block);
     const char* same_options[] = {"IGNORE_DATA_AXIS_TO_SRS_AXIS_MAPPING=YES", nullptr};
     if (layer_h->IsSame(block_h.get(), same_options)) return;
 

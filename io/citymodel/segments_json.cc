@@ -11,6 +11,7 @@
 
 #include "algorithms/core/error.h"
 #include "io/citymodel/output_file.h"
+#include "io/core/crs_identity.h"
 
 namespace roofsweep {
 
@@ -126,11 +127,7 @@ SegmentSet ReadSegments(const std::string& path, const std::string& layer_name) 
     if (!layer) throw Error(path + ": no layer with line geometry");
   }
   SegmentSet set;
-  if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
-    const char* auth = srs->GetAuthorityName(nullptr);
-    const char* code = srs->GetAuthorityCode(nullptr);
-    if (auth && code) set.crs = std::string(auth) + ":" + code;
-  }
+  if (const OGRSpatialReference* srs = layer->GetSpatialRef()) set.crs = IdentifyCrs(*srs);
   const int kind_field = layer->GetLayerDefn()->GetFieldIndex("kind");
   const int rms_field = layer->GetLayerDefn()->GetFieldIndex("rms_px");
   const int depth_field = layer->GetLayerDefn()->GetFieldIndex("depth_from");

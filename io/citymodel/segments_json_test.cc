@@ -1,6 +1,6 @@
 // 3D lines read back for `run -lines`: the reprojection residual roofsweep
 // wrote beside each line comes back with it, and is unknown (NaN) where the
-// source has none.
+// source has none; the CRS comes back as the code it was written with.
 #include "io/citymodel/segments_json.h"
 
 #include <gtest/gtest.h>
@@ -41,6 +41,10 @@ TEST(ReadSegments, TheResidualOfAWrittenLineComesBack) {
   EXPECT_DOUBLE_EQ(set.segments[1].segment.b.z(), 102);
   EXPECT_TRUE(std::isnan(set.segments[2].rms_px));
   EXPECT_TRUE(std::isnan(set.segments[3].rms_px));
+  // The layer's CRS is stored promoted to 3D, without a top-level code; it
+  // must still read back as the block's, or run -lines cannot tell a file in
+  // another CRS from its own.
+  EXPECT_EQ(set.crs, "EPSG:25832");
 }
 
 TEST(ReadSegments, NoResidualFieldMeansUnknown) {
@@ -59,6 +63,7 @@ TEST(ReadSegments, NoResidualFieldMeansUnknown) {
   const SegmentSet plain = ReadSegments(gpkg);
   ASSERT_EQ(plain.segments.size(), 1u);
   EXPECT_TRUE(std::isnan(plain.segments[0].rms_px));
+  EXPECT_EQ(plain.crs, "");  // written without one
 }
 
 }  // namespace

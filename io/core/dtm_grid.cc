@@ -5,19 +5,13 @@
 #include <limits>
 
 #include "algorithms/core/error.h"
+#include "io/core/crs_identity.h"
 #include "io/core/gdal_util.h"
 
 namespace roofsweep {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::unique_ptr<OGRSpatialReference> HorizontalOf(const OGRSpatialReference& srs) {
-  auto h = std::make_unique<OGRSpatialReference>(srs);
-  if (h->IsCompound()) h->StripVertical();
-  h->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  return h;
-}
 
 }  // namespace
 
@@ -60,8 +54,8 @@ DtmRaster::DtmRaster(const std::string& path, const std::string& block_crs) : pa
       throw Error(path + ": cannot relate the DTM to the block CRS '" + block_crs + "' (" +
                   errors.Message("GDAL cannot read that CRS") + ")");
     }
-    auto dtm_h = HorizontalOf(*dtm_srs);
-    auto block_h = HorizontalOf(block);
+    auto dtm_h = HorizontalCrs(*dtm_srs);
+    auto block_h = HorizontalCrs(block);
     if (!dtm_h->IsSame(block_h.get())) {
       to_dtm_.reset(OGRCreateCoordinateTransformation(block_h.get(), dtm_h.get()));
       to_block_.reset(OGRCreateCoordinateTransformation(dtm_h.get(), block_h.get()));

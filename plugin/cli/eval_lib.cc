@@ -12,6 +12,7 @@
 #include "io/citymodel/output_file.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
+#include "io/core/crs_identity.h"
 #include "io/core/image_io.h"
 
 namespace fs = std::filesystem;
@@ -29,7 +30,7 @@ bool IsRoofKind(const std::string& kind) {
 
 void CheckSameCrs(const std::string& a, const std::string& what_a, const std::string& b,
                   const std::string& what_b) {
-  if (!a.empty() && !b.empty() && a != b) {
+  if (!a.empty() && !b.empty() && !SameHorizontalCrs(a, b)) {
     throw Error(what_a + " is in " + a + " but " + what_b + " is in " + b +
                 "; convert one of them first");
   }

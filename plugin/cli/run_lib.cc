@@ -25,6 +25,7 @@
 #include "io/citymodel/reproject.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
+#include "io/core/crs_identity.h"
 #include "io/core/image_io.h"
 #include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
@@ -158,7 +159,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
          Since(t0)});
   } else {
     const SegmentSet given = ReadSegments(r.lines_in);
-    if (!given.crs.empty() && !manifest.crs.empty() && given.crs != manifest.crs)
+    if (!given.crs.empty() && !manifest.crs.empty() && !SameHorizontalCrs(given.crs, manifest.crs))
       out.messages.push_back("Warning: " + r.lines_in + " is in " + given.crs + ", the block in " +
                              manifest.crs + "; read as block coordinates");
     for (const LabelledSegment& s : given.segments) {
