@@ -75,6 +75,8 @@ std::string FormatTable(const EvalResult& r) {
         std::to_string(g.vertices) + " vertices, " + std::to_string(g.vertex_outliers) +
             " beyond " + Fmt(r.options.vertex_max_distance_m, "%.1f m"));
   if (r.options.gsd_m > 0) t.Row("vertex RMS XY", Fmt(g.vertex_rms_gsd, "%.2f GSD"));
+  t.Row("vertex distance median", Fmt(g.vertex_median_m, "%.3f m"), "all vertices");
+  if (r.options.gsd_m > 0) t.Row("vertices within 2 GSD", Pct(g.vertex_within_2gsd));
   t.Row("RMSZ", Fmt(g.rmsz_m, "%.3f m"),
         std::to_string(g.rmsz_cells) + " cells of " + Fmt(r.options.rmsz_grid_m, "%.2f m"));
   t.Row("mean dZ (result - ref)", Fmt(g.dz_mean_m, "%+.3f m"));
@@ -143,6 +145,8 @@ nlohmann::json ToJson(const EvalResult& r) {
                    {"angle_max_deg", Num(g.angle_max_deg)},
                    {"vertex_rms_m", Num(g.vertex_rms_m)},
                    {"vertex_rms_gsd", Num(g.vertex_rms_gsd)},
+                   {"vertex_median_m", Num(g.vertex_median_m)},
+                   {"vertex_within_2gsd", Num(g.vertex_within_2gsd)},
                    {"vertices", g.vertices},
                    {"vertex_outliers", g.vertex_outliers},
                    {"rmsz_m", Num(g.rmsz_m)},

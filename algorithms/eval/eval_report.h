@@ -15,7 +15,8 @@ std::string FormatTable(const EvalResult& result);
 // undefined ratios null. Keys: roof_planes.{completeness, correctness,
 // quality, n_reference, n_result, tp_reference, tp_result, n_1_to_m, n_n_to_1,
 // n_n_to_m}, geometry.{angle_median_deg, angle_rms_deg, angle_max_deg,
-// vertex_rms_m, vertex_rms_gsd, rmsz_m, dz_mean_m, matched_pairs, ...},
+// vertex_rms_m, vertex_rms_gsd, vertex_median_m, vertex_within_2gsd, rmsz_m,
+// dz_mean_m, matched_pairs, ...},
 // buildings.{completeness, correctness, quality, roof_type_agreement, ...},
 // lines3d.{evaluated, precision, completeness, roof_edge_completeness, ...},
 // input.{result, reference}, options.

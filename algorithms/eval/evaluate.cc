@@ -219,7 +219,7 @@ void ScoreGeometry(const eval::RoofPlaneSet& res, const eval::RoofPlaneSet& ref,
                    const SideMatch& ref_match, const std::vector<Region>& res_regions,
                    const std::vector<Region>& ref_regions, const EvalOptions& o,
                    GeometryScores* g) {
-  std::vector<double> angles;
+  std::vector<double> angles, dist;
   double v2 = 0;
   for (size_t t = 0; t < ref.planes.size(); ++t) {
     const int r = ref_match.best[t];
@@ -228,6 +228,7 @@ void ScoreGeometry(const eval::RoofPlaneSet& res, const eval::RoofPlaneSet& ref,
     ForEachRing(res.planes[r].outline, [&](const eval::Ring2& ring) {
       for (const auto& v : ring) {
         const double d = DistanceToOutline(v, ref.planes[t].outline);
+        dist.push_back(d);
         if (d > o.vertex_max_distance_m) {
           ++g->vertex_outliers;
         } else {
@@ -250,6 +251,16 @@ void ScoreGeometry(const eval::RoofPlaneSet& res, const eval::RoofPlaneSet& ref,
   if (g->vertices > 0) {
     g->vertex_rms_m = std::sqrt(v2 / g->vertices);
     if (o.gsd_m > 0) g->vertex_rms_gsd = *g->vertex_rms_m / o.gsd_m;
+  }
+  if (!dist.empty()) {
+    std::sort(dist.begin(), dist.end());
+    const size_t n = dist.size();
+    g->vertex_median_m = n % 2 ? dist[n / 2] : 0.5 * (dist[n / 2 - 1] + dist[n / 2]);
+    if (o.gsd_m > 0)
+      g->vertex_within_2gsd =
+          static_cast<double>(std::upper_bound(dist.begin(), dist.end(), 2 * o.gsd_m) -
+                              dist.begin()) /
+          n;
   }
 }
 

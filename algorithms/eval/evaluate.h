@@ -102,6 +102,10 @@ struct GeometryScores {
   int vertices = 0;         // result outline vertices used
   int vertex_outliers = 0;  // left out: farther than vertex_max_distance_m
   std::optional<double> vertex_rms_m, vertex_rms_gsd;
+  // The RMS is ruled by a few vertices metres off, and the cut-off decides
+  // which of them count; the median and the share within 2 GSD (over all
+  // vertices, outliers included) show how the rest lie.
+  std::optional<double> vertex_median_m, vertex_within_2gsd;
   long long rmsz_cells = 0;  // grid cells both models cover
   long long rmsz_cells_result_only = 0, rmsz_cells_reference_only = 0;
   std::optional<double> rmsz_m, dz_mean_m;

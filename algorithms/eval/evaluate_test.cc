@@ -123,6 +123,9 @@ TEST(Evaluate, ShiftedBoxVertexRmsAndRmsz) {
     const EvalResult r = Evaluate(Shifted(m, V(0.5, 0, 0)), m, o);
     EXPECT_NEAR(*r.geometry.vertex_rms_m, std::sqrt(0.125), 1e-9);
     EXPECT_NEAR(*r.geometry.vertex_rms_gsd, std::sqrt(0.125) / 0.1, 1e-7);
+    // Half the vertices on the outline, half 0.5 m off.
+    EXPECT_NEAR(*r.geometry.vertex_median_m, 0.25, 1e-9);
+    EXPECT_NEAR(*r.geometry.vertex_within_2gsd, 0.5, 1e-9);
     // Flat roof and a gable shifted along its ridge: same heights where both exist.
     EXPECT_NEAR(*r.geometry.rmsz_m, 0, 1e-9);
     EXPECT_EQ(r.geometry.rmsz_cells, (76 + 92) * 16);  // (10-0.5)*8 + (12-0.5)*8
@@ -130,6 +133,7 @@ TEST(Evaluate, ShiftedBoxVertexRmsAndRmsz) {
   {
     const EvalResult r = Evaluate(Shifted(m, V(2, 0, 0)), m, o);
     EXPECT_NEAR(*r.geometry.vertex_rms_m, std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(*r.geometry.vertex_within_2gsd, 0.5, 1e-9);
   }
 }
 
