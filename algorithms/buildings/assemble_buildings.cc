@@ -560,6 +560,82 @@ Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis
   return r.size() >= 3 && SignedArea(r) > 1e-9 ? r : hull;
 }
 
+// True when a supporting line of the planes lies along the edge a-b: within
+// border_max_angle_deg and border_max_offset_m over half its length.
+bool LineAlong(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+               const std::vector<RoofPlaneHypothesis>& planes, const std::vector<int>& active,
+               const AssemblyOptions& o) {
+  const double elen = (b - a).norm();
+  if (elen < 1e-6) return false;
+  const Eigen::Vector2d u = (b - a) / elen, nrm(u.y(), -u.x());
+  const double cos_max = std::cos(o.border_max_angle_deg * kDeg);
+  for (int i : active)
+    for (const auto& l : planes[i].lines_xy) {
+      const Eigen::Vector2d d = l[1] - l[0];
+      const double len = d.norm();
+      if (len < 1e-6 || std::abs(u.dot(d)) < cos_max * len) continue;
+      if (std::max(std::abs((l[0] - a).dot(nrm)), std::abs((l[1] - a).dot(nrm))) >
+          o.border_max_offset_m)
+        continue;
+      const double t0 = std::clamp((l[0] - a).dot(u), 0.0, elen);
+      const double t1 = std::clamp((l[1] - a).dot(u), 0.0, elen);
+      if (std::abs(t1 - t0) >= 0.5 * elen) return true;
+    }
+  return false;
+}
+
+// The outline with its rounded or cut corners squared (see
+// AssemblyOptions::square_corners). Convex in, convex out: each corner
+// point lies on the extensions of two edges, so the hull with it drops the
+// chain between them and nothing else.
+Ring2 SquareCorners(const Ring2& outline, const std::vector<RoofPlaneHypothesis>& planes,
+                    const std::vector<int>& active, const AssemblyOptions& o) {
+  const size_t n = outline.size();
+  if (!o.square_corners || n < 4) return outline;
+  const double tol = o.corner_max_angle_deg * kDeg;
+  auto dir = [&](size_t k) {
+    const Eigen::Vector2d d = outline[(k + 1) % n] - outline[k % n];
+    return std::atan2(d.y(), d.x());
+  };
+  auto len = [&](size_t k) { return (outline[(k + 1) % n] - outline[k % n]).norm(); };
+  std::vector<Eigen::Vector2d> pts(outline.begin(), outline.end());
+  bool any = false;
+  for (size_t i = 0; i < n; ++i) {
+    if (len(i) < o.corner_min_side_m) continue;
+    // Counter-clockwise, the edges turn left monotonically: the first edge
+    // turned by 90 - tol or more either is the other side of a right angle
+    // or there is none.
+    size_t j = i + 1;
+    double turn = 0;
+    for (; j < i + n; ++j) {
+      turn = std::remainder(dir(j) - dir(i), 2 * M_PI);
+      if (turn < 0) turn += 2 * M_PI;
+      if (turn >= M_PI / 2 - tol) break;
+    }
+    if (j == i + 1 || j >= i + n || turn > M_PI / 2 + tol || len(j) < o.corner_min_side_m) continue;
+    bool supported = false;
+    for (size_t k = i + 1; k < j && !supported; ++k)
+      supported = LineAlong(outline[k % n], outline[(k + 1) % n], planes, active, o);
+    if (supported) continue;
+    // Where the two edges' lines meet.
+    const Eigen::Vector2d a = outline[i], da = outline[(i + 1) % n] - a;
+    const Eigen::Vector2d b = outline[j % n], db = outline[(j + 1) % n] - b;
+    const double den = da.x() * db.y() - da.y() * db.x();
+    if (std::abs(den) < 1e-9) continue;
+    const double t = ((b - a).x() * db.y() - (b - a).y() * db.x()) / den;
+    const Eigen::Vector2d c = a + t * da;
+    double dist = std::numeric_limits<double>::infinity();
+    for (size_t k = i + 1; k < j; ++k)
+      dist = std::min(dist, PointSegmentDistance(c, outline[k % n], outline[(k + 1) % n]));
+    if (dist > o.corner_max_fill_m) continue;
+    pts.push_back(c);
+    any = true;
+  }
+  if (!any) return outline;
+  Ring2 r = ConvexHull(pts);
+  return r.size() >= 3 && SignedArea(r) > 1e-9 ? r : outline;
+}
+
 // Connected pieces of `active` (ascending plane indices) under `links`,
 // each ascending, ordered by their smallest index.
 std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
@@ -710,7 +786,8 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     while (!env) {
       std::vector<Eigen::Vector2d> all;
       for (int i : active) all.insert(all.end(), planes[i].patch.begin(), planes[i].patch.end());
-      Ring2 outline = FollowBorderLines(ConvexHull(all), planes, active, o);
+      Ring2 outline =
+          SquareCorners(FollowBorderLines(ConvexHull(all), planes, active, o), planes, active, o);
       if (fp && outline.size() >= 3) {
         std::vector<Ring2> pieces = IntersectPolygons(outline, fp->outline);
         auto largest = std::max_element(

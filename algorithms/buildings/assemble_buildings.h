@@ -125,6 +125,17 @@ struct AssemblyOptions {
   bool border_lines = true;
   double border_max_offset_m = 1.0;
   double border_max_angle_deg = 10.0;
+  // Square corners: where two outline edges of at least corner_min_side_m
+  // meet at a right angle (within corner_max_angle_deg, as above) through a chain of
+  // shorter edges that no supporting line lies along, the chain is a corner
+  // the patches rounded off or a hull edge cut across (the sweep's windows
+  // keep away from corners, where two faces meet), and the two edges are
+  // extended to meet when their corner lies within corner_max_fill_m of the
+  // outline. Roofs in plan have right-angled corners far more often than cut
+  // ones; a cut corner long enough to carry a line stays.
+  bool square_corners = true;
+  double corner_min_side_m = 1.5;
+  double corner_max_fill_m = 1.5;
   // Vertices closer than this are welded so that neighbouring faces share
   // them exactly.
   double weld_m = 1e-3;

@@ -343,6 +343,33 @@ TEST(AssembleBuildings, TheOutlineFollowsTheBorderLines) {
   EXPECT_NEAR(r.model.buildings[0].double_attributes.at("footprint_m2"), 76, 1e-6);
 }
 
+TEST(AssembleBuildings, RoundedOrCutCornersOfTheOutlineAreSquared) {
+  // The patches keep off two corners of the house: the south-west one cut
+  // by 1 m legs, the north-east one by 0.8 m legs in two steps.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in[0].patch = ConvexHull({{0, 1}, {1, 0}, {10, 0}, {10, 4}, {0, 4}});
+  in[1].patch = ConvexHull({{0, 4}, {10, 4}, {10, 7.2}, {9.8, 7.8}, {9.2, 8}, {0, 8}});
+  auto area = [&](const AssemblyOptions& o) {
+    const AssemblyResult r = AssembleBuildings(in, Flat(0), o);
+    EXPECT_EQ(r.model.buildings.size(), 1u);
+    ExpectAllValid(r);
+    return r.model.buildings.empty() ? 0.0
+                                     : r.model.buildings[0].double_attributes.at("footprint_m2");
+  };
+  EXPECT_NEAR(area({}), 80, 1e-6);
+  AssemblyOptions off;
+  off.square_corners = false;
+  const double cut = 0.5 + 0.16;  // the triangle, and the quadrilateral by the shoelace formula
+  EXPECT_NEAR(area(off), 80 - cut, 1e-6);
+  // A cut corner with a line along it is the building's own.
+  in[0].lines_xy = {{Eigen::Vector2d(0, 1), Eigen::Vector2d(1, 0)}};
+  EXPECT_NEAR(area({}), 79.5, 1e-6);
+  // A corner whose filling would reach out 2.1 m is not a rounded corner.
+  in[0].lines_xy.clear();
+  in[0].patch = ConvexHull({{0, 3}, {3, 0}, {10, 0}, {10, 4}, {0, 4}});
+  EXPECT_NEAR(area({}), 80 - 4.5, 1e-6);
+}
+
 TEST(AssembleBuildings, ValleySplitsIntoConvexPartsOfOneBuilding) {
   // A butterfly roof: two planes falling towards a valley at y = 4. One
   // lower envelope would turn the V upside down; two parts keep it.
