@@ -3,6 +3,7 @@
 #include <string>
 
 #include "algorithms/buildings/city_model.h"
+#include "io/citymodel/segments_json.h"
 
 namespace roofsweep {
 
@@ -13,5 +14,10 @@ namespace roofsweep {
 // has no CRS, either CRS is unknown, or a vertex cannot be transformed; the
 // model is then unchanged. `-t_srs` of convert and run.
 void ReprojectCityModel(CityModel& model, const std::string& target_srs);
+
+// The same for 3D segments (`run -lines` given lines in another CRS than
+// the block's): both ends of every segment, then set.crs = target_srs; the
+// set is unchanged when it throws.
+void ReprojectSegments(SegmentSet& set, const std::string& target_srs);
 
 }  // namespace roofsweep

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "algorithms/core/error.h"
 #include "io/citymodel/procedural_buildings.h"
 
@@ -29,6 +31,28 @@ TEST(ReprojectCityModel, MovesEveryVertexAndTheCrs) {
       }
   EXPECT_TRUE(found_corner)
       << "the footprint corner (391800, 5819000, 50) is not where cs2cs puts it";
+}
+
+TEST(ReprojectSegments, MovesBothEndsAndTheCrs) {
+  SegmentSet set;
+  set.crs = "EPSG:25833";
+  LabelledSegment l;
+  l.segment = {{391800.0, 5819000.0, 50.0}, {391810.0, 5819000.0, 52.0}};
+  l.rms_px = 0.2;
+  set.segments.push_back(l);
+  ReprojectSegments(set, "EPSG:25832");
+  EXPECT_EQ(set.crs, "EPSG:25832");
+  ASSERT_EQ(set.segments.size(), 1u);
+  // The same cs2cs point as above.
+  EXPECT_LT((set.segments[0].segment.a - Eigen::Vector3d(798922.616786730, 5826932.150407154, 50.0))
+                .norm(),
+            1e-6);
+  EXPECT_NEAR((set.segments[0].segment.b - set.segments[0].segment.a).norm(), std::hypot(10.0, 2.0),
+              0.01);
+  EXPECT_DOUBLE_EQ(set.segments[0].rms_px, 0.2);
+  SegmentSet none;
+  none.segments = set.segments;
+  EXPECT_THROW(ReprojectSegments(none, "EPSG:25832"), Error);
 }
 
 TEST(ReprojectCityModel, UrnSpellingIsAccepted) {

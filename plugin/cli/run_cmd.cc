@@ -52,7 +52,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
       .Option("-t_srs", &r.target_crs, "SRS", "reproject the LoD2 output to SRS (PROJ)")
       .Option("-lines", &r.lines_in, "FILE",
-              "start from these 3D lines (OGR line layer or segments JSON) instead of matching")
+              "start from these 3D lines (OGR line layer or segments JSON) instead of matching; "
+              "lines in another CRS are reprojected to the block's")
       .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
       .Option("-half_planes", &r.half_planes, "FILE",
               "also write the half-planes (layer half_planes)")

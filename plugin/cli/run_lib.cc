@@ -158,10 +158,18 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
          StrFormat("%lld segments, %zu 3D lines", matched.funnel.segments, matched.lines.size()),
          Since(t0)});
   } else {
-    const SegmentSet given = ReadSegments(r.lines_in);
-    if (!given.crs.empty() && !manifest.crs.empty() && !SameHorizontalCrs(given.crs, manifest.crs))
-      out.messages.push_back("Warning: " + r.lines_in + " is in " + given.crs + ", the block in " +
-                             manifest.crs + "; read as block coordinates");
+    SegmentSet given = ReadSegments(r.lines_in);
+    if (!given.crs.empty() && !manifest.crs.empty() &&
+        !SameHorizontalCrs(given.crs, manifest.crs)) {
+      const std::string from = given.crs;
+      try {
+        ReprojectSegments(given, manifest.crs);
+      } catch (const Error& e) {
+        throw Error(r.lines_in + ": " + e.what());
+      }
+      out.messages.push_back(r.lines_in + ": lines reprojected from " + from + " to the block's " +
+                             manifest.crs);
+    }
     for (const LabelledSegment& s : given.segments) {
       Line3D l;
       l.segment = {frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)};
