@@ -493,6 +493,29 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
   return b;
 }
 
+// Where a supporting line (plan view) lies along the outline edge a-b of a
+// counter-clockwise ring, when within border_max_angle_deg of it and
+// border_max_offset_m of its line: its mean offset along the edge's outward
+// normal (on the right of a -> b) and the length of the edge it spans.
+struct LineAlongEdge {
+  double offset = 0, overlap = 0;
+};
+std::optional<LineAlongEdge> PlaceAlongEdge(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                            const std::array<Eigen::Vector2d, 2>& l,
+                                            const AssemblyOptions& o) {
+  const Eigen::Vector2d d = l[1] - l[0], e = b - a;
+  const double len = d.norm(), elen = e.norm();
+  if (len < 1e-6 || elen < 1e-6) return std::nullopt;
+  if (std::abs(e.dot(d)) < std::cos(o.border_max_angle_deg * kDeg) * elen * len)
+    return std::nullopt;
+  const Eigen::Vector2d u = e / elen, outward(u.y(), -u.x());
+  const double o0 = (l[0] - a).dot(outward), o1 = (l[1] - a).dot(outward);
+  if (std::max(std::abs(o0), std::abs(o1)) > o.border_max_offset_m) return std::nullopt;
+  const double t0 = std::clamp((l[0] - a).dot(u), 0.0, elen);
+  const double t1 = std::clamp((l[1] - a).dot(u), 0.0, elen);
+  return LineAlongEdge{0.5 * (o0 + o1), std::abs(t1 - t0)};
+}
+
 // The outline moved onto the border lines of its planes (see
 // AssemblyOptions::border_lines): for each hull edge the qualifying line
 // farthest out; the hull is first grown out to the lines outside it, then
@@ -500,7 +523,6 @@ Building BuildSolid(const std::vector<RoofPlaneHypothesis>& planes, const std::v
 Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis>& planes,
                         const std::vector<int>& active, const AssemblyOptions& o) {
   if (!o.border_lines || hull.size() < 3) return hull;
-  const double cos_max = std::cos(o.border_max_angle_deg * kDeg);
   const size_t n = hull.size();
   // Counter-clockwise ring: each edge's outward normal is on its right.
   std::vector<Eigen::Vector2d> outward(n);
@@ -512,25 +534,13 @@ Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis
   std::vector<double> best(n, -std::numeric_limits<double>::infinity());
   std::vector<std::array<Eigen::Vector2d, 2>> chosen(n);
   for (int i : active)
-    for (const auto& l : planes[i].lines_xy) {
-      const Eigen::Vector2d d = l[1] - l[0];
-      const double len = d.norm();
-      if (len < 1e-6) continue;
+    for (const auto& l : planes[i].lines_xy)
       for (size_t k = 0; k < n; ++k) {
-        const Eigen::Vector2d a = hull[k], b = hull[(k + 1) % n];
-        const Eigen::Vector2d e = b - a;
-        const double elen = e.norm();
-        if (elen < 1e-6 || std::abs(e.dot(d)) < cos_max * elen * len) continue;
-        const double o0 = (l[0] - a).dot(outward[k]), o1 = (l[1] - a).dot(outward[k]);
-        if (std::max(std::abs(o0), std::abs(o1)) > o.border_max_offset_m) continue;
-        const Eigen::Vector2d u = e / elen;
-        const double t0 = std::clamp((l[0] - a).dot(u), 0.0, elen);
-        const double t1 = std::clamp((l[1] - a).dot(u), 0.0, elen);
-        if (std::abs(t1 - t0) < 0.5 * len) continue;
-        const double offset = 0.5 * (o0 + o1);
-        if (offset > best[k]) best[k] = offset, chosen[k] = l;
+        // Half the line along the edge: a line is a border where it runs.
+        const auto along = PlaceAlongEdge(hull[k], hull[(k + 1) % n], l, o);
+        if (!along || along->overlap < 0.5 * (l[1] - l[0]).norm()) continue;
+        if (along->offset > best[k]) best[k] = along->offset, chosen[k] = l;
       }
-    }
   // An edge inside its line moves out to it whole (the line's end points
   // alone would chamfer the corners); one outside is cut below.
   std::vector<Eigen::Vector2d> pts(hull.begin(), hull.end());
@@ -560,26 +570,15 @@ Ring2 FollowBorderLines(const Ring2& hull, const std::vector<RoofPlaneHypothesis
   return r.size() >= 3 && SignedArea(r) > 1e-9 ? r : hull;
 }
 
-// True when a supporting line of the planes lies along the edge a-b: within
-// border_max_angle_deg and border_max_offset_m over half its length.
+// True when a supporting line of the planes lies along the edge a-b over
+// half the edge: the edge is the building's own, not a cut corner.
 bool LineAlong(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                const std::vector<RoofPlaneHypothesis>& planes, const std::vector<int>& active,
                const AssemblyOptions& o) {
-  const double elen = (b - a).norm();
-  if (elen < 1e-6) return false;
-  const Eigen::Vector2d u = (b - a) / elen, nrm(u.y(), -u.x());
-  const double cos_max = std::cos(o.border_max_angle_deg * kDeg);
   for (int i : active)
     for (const auto& l : planes[i].lines_xy) {
-      const Eigen::Vector2d d = l[1] - l[0];
-      const double len = d.norm();
-      if (len < 1e-6 || std::abs(u.dot(d)) < cos_max * len) continue;
-      if (std::max(std::abs((l[0] - a).dot(nrm)), std::abs((l[1] - a).dot(nrm))) >
-          o.border_max_offset_m)
-        continue;
-      const double t0 = std::clamp((l[0] - a).dot(u), 0.0, elen);
-      const double t1 = std::clamp((l[1] - a).dot(u), 0.0, elen);
-      if (std::abs(t1 - t0) >= 0.5 * elen) return true;
+      const auto along = PlaceAlongEdge(a, b, l, o);
+      if (along && along->overlap >= 0.5 * (b - a).norm()) return true;
     }
   return false;
 }
