@@ -676,6 +676,8 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   }
   AssemblyResult res;
   res.planes_in = static_cast<int>(input.size());
+  res.plane_building.assign(input.size(), "");
+  res.plane_reason.assign(input.size(), "");
 
   // 1. Plausible roof planes, cut at the footprints when there are any.
   const std::vector<int> plausible = PlausiblePlanes(input, ground, o, &res.rejected);
@@ -841,14 +843,18 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       res.rejected.push_back(bname + ": no roof plane left");
       continue;
     }
+    // The planes of a hypothesis that fails as a whole share its reason.
+    auto reject = [&](const std::string& why) {
+      res.rejected.push_back(bname + ": " + why);
+      for (int i : active) res.plane_reason[origin[i]] = bname + ": " + why;
+    };
     const double area = SignedArea(env->outline);
     if (area < o.min_footprint_m2) {
-      res.rejected.push_back(bname +
-                             StrFormat(": footprint %.1f m2 < %.1f m2", area, o.min_footprint_m2));
+      reject(StrFormat("footprint %.1f m2 < %.1f m2", area, o.min_footprint_m2));
       continue;
     }
     if (!std::isfinite(env->ground_z)) {
-      res.rejected.push_back(bname + ": no ground height under the outline");
+      reject("no ground height under the outline");
       continue;
     }
 
@@ -864,10 +870,11 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     }
     const SolidCheckResult check = CheckBuildingSolid(b);
     if (!check.Valid()) {
-      res.rejected.push_back(bname + ": solid not valid (" + check.Summary() + ")");
+      reject("solid not valid (" + check.Summary() + ")");
       continue;
     }
     res.planes_used += static_cast<int>(active.size());
+    for (int i : active) res.plane_building[origin[i]] = b.id;
     if (f >= 0) ++built_over[f];
     res.model.buildings.push_back(std::move(b));
   }

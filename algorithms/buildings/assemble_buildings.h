@@ -147,6 +147,10 @@ struct AssemblyResult {
   // One line per plane or building hypothesis that did not become (part
   // of) a building, with the reason ("plane 7: 1.2 m above ground < 2.5 m").
   std::vector<std::string> rejected;
+  // Per input plane: the id of the building it roofs, empty if none; and
+  // when its building hypothesis failed as a whole, that reason (a plane
+  // dropped on its own has its reason in `rejected`).
+  std::vector<std::string> plane_building, plane_reason;
   int planes_in = 0, planes_used = 0, hypotheses = 0;
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint_completion.h"
@@ -132,6 +133,15 @@ TEST(AssembleBuildings, PartialPatchesStillCloseAndTwoBuildingsStayApart) {
   EXPECT_EQ(gabled, 2);
   EXPECT_EQ(flat, 1);
   ExpectAllValid(r);
+  // Each plane names the building it roofs: the first gable's two planes
+  // one, the second gable's another.
+  ASSERT_EQ(r.plane_building.size(), in.size());
+  std::set<std::string> ids;
+  for (const Building& b : r.model.buildings) ids.insert(b.id);
+  for (size_t i = 0; i < in.size(); ++i) EXPECT_EQ(ids.count(r.plane_building[i]), 1u) << i;
+  EXPECT_EQ(r.plane_building[0], r.plane_building[1]);
+  EXPECT_EQ(r.plane_building[2], r.plane_building[3]);
+  EXPECT_NE(r.plane_building[0], r.plane_building[2]);
 }
 
 TEST(AssembleBuildings, EveryRejectionHasAReason) {
@@ -154,6 +164,14 @@ TEST(AssembleBuildings, EveryRejectionHasAReason) {
   EXPECT_NE(r.rejected[1].find("slope"), std::string::npos) << r.rejected[1];
   EXPECT_NE(r.rejected[2].find("degenerate"), std::string::npos) << r.rejected[2];
   EXPECT_NE(r.rejected[4].find("footprint"), std::string::npos) << r.rejected[4];
+  // Only the tiny roof's plane failed with its building hypothesis; the
+  // others were dropped on their own.
+  ASSERT_EQ(r.plane_reason.size(), in.size());
+  for (size_t i = 0; i < in.size(); ++i) {
+    EXPECT_TRUE(r.plane_building[i].empty()) << i;
+    EXPECT_EQ(r.plane_reason[i].empty(), i != 2) << i << ": " << r.plane_reason[i];
+  }
+  EXPECT_EQ(r.plane_reason[2], r.rejected[4]);
 }
 
 TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {

@@ -57,6 +57,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
       .Option("-half_planes", &r.half_planes, "FILE",
               "also write the half-planes (layer half_planes)")
+      .Option("-planes", &r.planes, "FILE",
+              "also write every roof plane hypothesis that was verified, with its patch, "
+              "whether it was built and why not (layer roof_planes)")
       .Option("-report", &r.report, "FILE",
               "JSON report: the stage table and why each rejected plane or building was not built")
       .Option("-footprints", &r.footprints, "FILE",

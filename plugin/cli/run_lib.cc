@@ -17,6 +17,7 @@
 #include "algorithms/core/format.h"
 #include "algorithms/geometry/block_overview.h"
 #include "algorithms/matching/match_lines.h"
+#include "algorithms/sweep/plane_fit.h"
 #include "algorithms/sweep/sweep_half_planes.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/footprint_reader.h"
@@ -76,10 +77,18 @@ std::optional<Eigen::Vector4d> BlockExtent(const Block& block) {
 
 // Appends the planes the verification confirmed to `kept`, scored by the
 // verified evidence (patch area x score); the others' reasons to `rejected`.
+// A roof plane hypothesis as verified, for the -planes layer.
+struct PlaneTrace {
+  RoofPlaneHypothesis plane;
+  PlaneVerification check;
+};
+
 void KeepVerified(std::vector<RoofPlaneHypothesis> planes,
                   const std::vector<PlaneVerification>& checks,
-                  std::vector<RoofPlaneHypothesis>* kept, std::vector<std::string>* rejected) {
+                  std::vector<RoofPlaneHypothesis>* kept, std::vector<std::string>* rejected,
+                  std::vector<PlaneTrace>* traces) {
   for (size_t i = 0; i < planes.size(); ++i) {
+    if (traces) traces->push_back({planes[i], checks[i]});
     if (!checks[i].accepted) {
       rejected->push_back(planes[i].id + ": " + checks[i].reason);
       continue;
@@ -88,6 +97,73 @@ void KeepVerified(std::vector<RoofPlaneHypothesis> planes,
     planes[i].score = std::abs(SignedArea(planes[i].patch)) * checks[i].score;
     kept->push_back(std::move(planes[i]));
   }
+}
+
+// The -planes layer: each traced hypothesis with its patch on its plane,
+// its verification figures and its fate: "built" (with the building's id),
+// "rejected" (with the reason the run gives for it) or "not built" (with
+// the reason its building hypothesis failed as a whole).
+void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& traces,
+                     const std::vector<RoofPlaneHypothesis>& assembled,
+                     const AssemblyResult& assembly, const std::vector<std::string>& rejected,
+                     const LocalFrame& frame, const std::string& crs, bool overwrite) {
+  std::map<std::string, std::string> building_of, failed_with;
+  for (size_t i = 0; i < assembled.size() && i < assembly.plane_building.size(); ++i) {
+    if (!assembly.plane_building[i].empty())
+      building_of[assembled[i].id] = assembly.plane_building[i];
+    if (!assembly.plane_reason[i].empty()) failed_with[assembled[i].id] = assembly.plane_reason[i];
+  }
+  // The first reason given for each plane ("plane 7 (line 3): ...").
+  std::map<std::string, std::string> reason_of;
+  for (const std::string& r : rejected) {
+    const size_t colon = r.find(": ");
+    if (colon != std::string::npos) reason_of.emplace(r.substr(0, colon), r.substr(colon + 2));
+  }
+  std::vector<LayerFeature> features;
+  for (const PlaneTrace& t : traces) {
+    const RoofPlaneHypothesis& h = t.plane;
+    if (h.patch.size() < 3 || !(std::abs(h.plane[2]) > 1e-9)) continue;
+    LayerFeature f;
+    Polygon3 patch;
+    for (const Eigen::Vector2d& p : h.patch)
+      patch.exterior.push_back(frame.ToCrs({p.x(), p.y(), PlaneZ(h.plane, p.x(), p.y())}));
+    f.polygons.push_back(std::move(patch));
+    f.strings["plane"] = h.id;
+    const auto built = building_of.find(h.id);
+    const auto why = reason_of.find(h.id);
+    if (!t.check.accepted) {
+      f.strings["status"] = "rejected";
+      f.strings["reason"] = t.check.reason;
+    } else if (built != building_of.end()) {
+      f.strings["status"] = "built";
+      f.strings["building"] = built->second;
+    } else if (why != reason_of.end()) {
+      f.strings["status"] = "rejected";
+      f.strings["reason"] = why->second;
+    } else if (failed_with.count(h.id)) {
+      f.strings["status"] = "not built";
+      f.strings["reason"] = failed_with[h.id];
+    } else {
+      // Not expected: every plane is built or has a reason.
+      f.strings["status"] = "not built";
+      f.strings["reason"] = "no reason recorded";
+    }
+    f.integers["lines"] = h.lines;
+    f.integers["derived"] = h.derived;
+    f.integers["samples"] = t.check.samples;
+    f.reals["longest_line_m"] = h.longest_line_m;
+    f.reals["slope_deg"] = std::acos(std::clamp(std::abs(h.plane[2]), 0.0, 1.0)) * 180 / M_PI;
+    f.reals["area_m2"] = std::abs(SignedArea(h.patch));
+    if (std::isfinite(t.check.score)) f.reals["score"] = t.check.score;
+    features.push_back(std::move(f));
+  }
+  FeatureLayerOptions lo;
+  lo.crs = crs;
+  lo.overwrite = overwrite;
+  lo.description =
+      "roofsweep roof plane hypotheses: patch, verification score, built or why not "
+      "(Baillard & Zisserman 2000, sections 4-5)";
+  WriteFeatureLayer(path, "roof_planes", LayerGeometry::kMultiPolygonZ, features, lo);
 }
 
 void WriteReport(const std::string& path, const RunSummary& s) {
@@ -110,7 +186,7 @@ void WriteReport(const std::string& path, const RunSummary& s) {
 RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   if (r.output.empty())
     throw Error(std::string(r.stop_after_sweep ? "sweep" : "run") + ": no output file given (-o)");
-  for (const std::string& p : {r.output, r.lines3d, r.half_planes, r.report})
+  for (const std::string& p : {r.output, r.lines3d, r.half_planes, r.planes, r.report})
     if (!p.empty()) CheckOutputPath(p, r.overwrite);
   if (!r.stop_after_sweep) ResolveCityModelFormat(r.output, r.format);  // fail early
   RunSummary out;
@@ -304,6 +380,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // §5: every plane's patch verified against all views that see it, then
   // conflicts resolved by the verified evidence (patch area x score).
   t0 = Clock::now();
+  std::vector<PlaneTrace> traces;
+  std::vector<PlaneTrace>* trace = r.planes.empty() ? nullptr : &traces;
   std::vector<RoofPlaneHypothesis> roof_planes = ToRoofPlanes(grouped.planes, &lines);
   {
     SubProgress verify_progress(progress, 0.95, 0.99);
@@ -311,7 +389,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         VerifyPlanes(block, images, roof_planes, r.verify, verify_progress);
     const size_t n_planes = roof_planes.size();
     std::vector<RoofPlaneHypothesis> verified;
-    KeepVerified(std::move(roof_planes), checks, &verified, &out.rejected);
+    KeepVerified(std::move(roof_planes), checks, &verified, &out.rejected, trace);
     const size_t n_verified = verified.size();
     const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping.max_overlap);
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
@@ -343,7 +421,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       const std::vector<PlaneVerification> checks =
           VerifyPlanes(block, images, extra, r.verify, none);
       const size_t before = roof_planes.size();
-      KeepVerified(std::move(extra), checks, &roof_planes, &out.rejected);
+      KeepVerified(std::move(extra), checks, &roof_planes, &out.rejected, trace);
       const int now = static_cast<int>(roof_planes.size() - before);
       const std::vector<std::string> conflicts =
           ResolveConflicts(&roof_planes, r.grouping.max_overlap);
@@ -385,7 +463,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     const size_t proposed = flat.size(), before = roof_planes.size();
     SubProgress none(progress, 0.99, 0.99);
     const std::vector<PlaneVerification> checks = VerifyPlanes(block, images, flat, r.verify, none);
-    KeepVerified(std::move(flat), checks, &roof_planes, &out.rejected);
+    KeepVerified(std::move(flat), checks, &roof_planes, &out.rejected, trace);
     const size_t confirmed = roof_planes.size() - before;
     const std::vector<std::string> conflicts =
         ResolveConflicts(&roof_planes, r.grouping.max_overlap);
@@ -401,6 +479,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   out.buildings = static_cast<int>(assembled.model.buildings.size());
+  if (trace)
+    WritePlaneLayer(r.planes, traces, roof_planes, assembled, out.rejected, frame, manifest.crs,
+                    r.overwrite);
   out.stages.push_back({"LoD2 buildings",
                         StrFormat("%d of %d hypotheses, %d planes used", out.buildings,
                                   assembled.hypotheses, assembled.planes_used),

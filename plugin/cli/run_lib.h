@@ -26,8 +26,11 @@ struct RunRequest {
   std::string lines_in;
   std::string lines3d;      // optional: also write the 3D lines (OGR layer lines3d)
   std::string half_planes;  // optional: also write the half-planes (OGR layer half_planes)
-  std::string report;       // optional: JSON with the stage table and every rejection
-  std::string target_crs;   // optional: reproject the LoD2 output (PROJ), -t_srs
+  // Optional: every roof plane hypothesis that reached the verification,
+  // with its patch and what became of it (OGR layer roof_planes).
+  std::string planes;
+  std::string report;      // optional: JSON with the stage table and every rejection
+  std::string target_crs;  // optional: reproject the LoD2 output (PROJ), -t_srs
   // Optional building footprints (any OGR polygon layer); empty: the
   // block's, if it names any. They restrict and label the buildings.
   std::string footprints;

@@ -14,7 +14,7 @@ small_block() {
 test_run_writes_valid_closed_lod2() {
   small_block || { fail simulate "exit $?"; return; }
   expect_ok run_gml run "$SIM" -o "$WORK/b.gml" -report "$WORK/report.json" -lines3d "$WORK/l.gpkg" \
-    -half_planes "$WORK/hp.gpkg"
+    -half_planes "$WORK/hp.gpkg" -planes "$WORK/planes.gpkg"
   grep -q "^half-plane sweep" "$WORK/stdout.txt" || fail run_stage_table "no stage table"
   local n
   n=$(grep -c "<bldg:Building " "$WORK/b.gml" || true)
@@ -40,6 +40,23 @@ assert names[:3] == ["read", "segments + 3D lines", "half-plane sweep"], names
 assert all(isinstance(x, str) and ": " in x for x in r["rejected"])
 PY
   [[ -s "$WORK/l.gpkg" && -s "$WORK/hp.gpkg" ]] && pass run_side_layers || fail run_side_layers "missing"
+  # Every verified plane hypothesis is built into a building of the output
+  # or carries a reason; the built ones are the planes the run used.
+  python3 - "$WORK/planes.gpkg" "$WORK/report.json" "$WORK/b.gml" <<'PY' && pass run_planes_layer \
+    || fail run_planes_layer "roof_planes layer incomplete or inconsistent with the run"
+import json, re, sqlite3, sys
+planes, report, gml = sys.argv[1:]
+rows = sqlite3.connect(planes).execute("select status, reason, building from roof_planes").fetchall()
+assert rows, "no rows"
+assert all(s in ("built", "rejected", "not built") for s, _, _ in rows), rows
+assert all(r and r != "no reason recorded" for s, r, _ in rows if s != "built"), rows
+built = [b for s, _, b in rows if s == "built"]
+stage = next(x for x in json.load(open(report))["stages"] if x["stage"] == "LoD2 buildings")
+used = int(re.search(r"(\d+) planes used", stage["result"]).group(1))
+assert len(built) == used, (len(built), stage)
+ids = set(re.findall(r'<bldg:Building gml:id="([^"]+)"', open(gml).read()))
+assert built and set(built) <= ids, (set(built) - ids)
+PY
   expect_ok run_eval eval "$WORK/b.gml" "$SIM"
   grep -q "Roof planes" "$WORK/stdout.txt" && pass run_eval_table || fail run_eval_table "no table"
 }
