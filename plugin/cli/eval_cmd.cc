@@ -21,6 +21,9 @@ int Eval(const std::vector<std::string>& args, Context&) {
       .Flag("--json|-json", &json, "print one JSON object instead of the table")
       .Option("-lines", &r.lines, "FILE", "3D lines to score (GPKG lines3d layer or segments JSON)")
       .Option("-png", &r.png, "FILE", "write a plan-view overlay (ground truth vs result)")
+      .Option("-planes", &r.planes, "FILE",
+              "roof plane hypotheses of the run (run -planes): tell the missed reference planes "
+              "by where they were lost")
       .Option("-gsd", &r.options.gsd_m, "M",
               "GSD for the vertex RMS in pixels (from the simulation)")
       .Option("-overlap", &r.options.plane_overlap_fraction, "F",

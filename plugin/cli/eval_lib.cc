@@ -10,6 +10,7 @@
 #include "algorithms/eval/overlay.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/output_file.h"
+#include "io/citymodel/plane_layer_reader.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/crs_identity.h"
@@ -97,6 +98,18 @@ EvalReport RunEval(const EvalRequest& r) {
                            extra.empty() ? nullptr : &extra);
   report.table = FormatTable(report.result);
   report.json = ToJson(report.result);
+  if (!r.planes.empty()) {
+    PlaneHypothesisSet hyps = ReadPlaneHypotheses(r.planes);
+    CheckSameCrs(hyps.crs, r.planes, truth.crs, truth_path);
+    for (PlaneHypothesisRecord& h : hyps.planes)
+      for (Eigen::Vector3d& v : h.patch) v = shift(v);
+    const PlaneLosses losses = ClassifyMissedPlanes(truth, report.result, hyps.planes);
+    report.table += "\n" + FormatPlaneLosses(losses);
+    nlohmann::json& j = report.json["missed_roof_planes"];
+    j = nlohmann::json::object();
+    for (const auto& [stage, n] : losses.count)
+      j[stage] = {{"count", n}, {"area_m2", losses.area_m2.at(stage)}};
+  }
   report.json["inputs"] = {{"result", r.result}, {"truth", truth_path}};
   if (!r.png.empty()) {
     cv::Mat bgr = RenderOverlay(result, truth, report.result), rgb;

@@ -14,6 +14,9 @@ struct EvalRequest {
   std::string truth;
   std::string lines;  // optional 3D lines: GPKG/OGR line layer or segments JSON
   std::string png;    // optional plan-view overlay to write
+  // Optional roof plane hypotheses of the run (`run -planes`): the missed
+  // reference planes are told by where they were lost.
+  std::string planes;
   bool overwrite = false;
   EvalOptions options;  // gsd_m = 0: from the simulation folder when there is one
 };

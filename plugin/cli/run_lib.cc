@@ -15,6 +15,7 @@
 #include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/format.h"
+#include "algorithms/core/reason_kind.h"
 #include "algorithms/geometry/block_overview.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/sweep/plane_fit.h"
@@ -38,22 +39,6 @@ using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// The reason of a rejection without its numbers, to count them by kind.
-std::string ReasonKind(const std::string& r) {
-  const size_t colon = r.find(": ");
-  std::string s = colon == std::string::npos ? r : r.substr(colon + 2);
-  std::string out;
-  for (char c : s) {
-    if ((c >= '0' && c <= '9') || c == '.' || c == '-') {
-      if (out.empty() || out.back() != '#') out += '#';
-    } else {
-      out += c;
-    }
-  }
-  const size_t paren = out.find(" (");
-  return paren == std::string::npos ? out : out.substr(0, paren);
 }
 
 // The block's area of interest, else the bounding box of what the images

@@ -59,6 +59,19 @@ assert built and set(built) <= ids, (set(built) - ids)
 PY
   expect_ok run_eval eval "$WORK/b.gml" "$SIM"
   grep -q "Roof planes" "$WORK/stdout.txt" && pass run_eval_table || fail run_eval_table "no table"
+  # With the run's plane hypotheses, eval tells every missed reference
+  # plane by where it was lost.
+  "$RS" eval "$WORK/b.gml" "$SIM" -planes "$WORK/planes.gpkg" -json >"$WORK/eval_planes.json" \
+    2>"$WORK/stderr.txt" || fail run_eval_planes "exit $?: $(head -c 300 "$WORK/stderr.txt")"
+  python3 - "$WORK/eval_planes.json" <<'PY' && pass run_eval_planes_losses \
+    || fail run_eval_planes_losses "missed planes not all accounted for"
+import json, sys
+d = json.load(open(sys.argv[1]))
+p, m = d["roof_planes"], d["missed_roof_planes"]
+assert sum(v["count"] for v in m.values()) == p["n_reference"] - p["tp_reference"], (p, m)
+PY
+  expect_fail run_eval_planes_wrong_layer "$WORK/none" "l\.gpkg: no layer 'roof_planes'" -- \
+    eval "$WORK/b.gml" "$SIM" -planes "$WORK/l.gpkg"
 }
 
 test_run_is_deterministic() {
