@@ -328,9 +328,15 @@ def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path
     out = str(tmp_path / "buildings.gpkg")
     fb = RecordingFeedback()
     report = str(tmp_path / "run.json")
-    rec = processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out, "REPORT": report},
-                         feedback=fb)
+    planes = str(tmp_path / "planes.gpkg")
+    rec = processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out, "REPORT": report,
+                                           "PLANES": planes}, feedback=fb)
     assert os.path.isfile(out)
+    # The plane hypotheses: each built or with a reason, loaded with the rest.
+    hyp = QgsVectorLayer(planes + "|layername=roof_planes", "p", "ogr")
+    assert hyp.isValid() and hyp.featureCount() > 0
+    assert all(f["status"] == "built" or f["reason"] for f in hyp.getFeatures())
+    assert planes + "|layername=roof_planes" in rec["LAYERS"]
     stages = [s["stage"] for s in json.load(open(report))["stages"]]
     assert "half-plane sweep" in stages and "LoD2 buildings" in stages, stages
     names = [u.split("layername=")[1] for u in rec["LAYERS"]]

@@ -18,12 +18,13 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             "layers are added to the project. Optional building footprints (any polygon layer) restrict "
             "the reconstruction: walls stand on the footprint where the roof planes cover it, and each "
             "building carries its footprint's id.")
-    USES_OPTIONS = ("-o", "-overwrite", "-report", "-min_height", "-footprints", "-footprints_layer",
-                    "-footprints_id")
+    USES_OPTIONS = ("-o", "-overwrite", "-report", "-planes", "-min_height", "-footprints",
+                    "-footprints_layer", "-footprints_id")
 
     BLOCK = "BLOCK"
     OUTPUT = "OUTPUT"
     REPORT = "REPORT"
+    PLANES = "PLANES"
     MIN_HEIGHT = "MIN_HEIGHT"
     FOOTPRINTS = "FOOTPRINTS"
     FOOTPRINT_ID = "FOOTPRINT_ID"
@@ -37,6 +38,9 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterFileDestination(
             self.REPORT, self.tr("Report: stage table and why each rejected plane or building was not built"),
             fileFilter="JSON (*.json)", optional=True, createByDefault=False))
+        self.addParameter(QgsProcessingParameterFileDestination(
+            self.PLANES, self.tr("Roof plane hypotheses: patch, score, built or why not"),
+            fileFilter="GeoPackage (*.gpkg)", optional=True, createByDefault=False))
         self.addParameter(QgsProcessingParameterFeatureSource(
             self.FOOTPRINTS, self.tr("Building footprints"), [QgsProcessing.TypeVectorPolygon], optional=True))
         self.addParameter(QgsProcessingParameterField(
@@ -57,6 +61,10 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             if self.given(parameters, self.REPORT) else ""
         if report:
             args += ["-report", report]
+        planes = self.parameterAsFileOutput(parameters, self.PLANES, context) \
+            if self.given(parameters, self.PLANES) else ""
+        if planes:
+            args += ["-planes", planes]
         if self.given(parameters, self.FOOTPRINTS):
             # A layer roofsweep's OGR can open as it is, else a GeoPackage copy
             # (memory layers, selections, virtual layers).
@@ -72,4 +80,6 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
         layers = []
         if out.lower().endswith(".gpkg"):
             layers = self.load_gpkg_layers(out, CITYMODEL_LAYERS + LINES_LAYERS, context, self.OUTPUT)
-        return {self.OUTPUT: out, self.REPORT: report, self.LAYERS: layers}
+        if planes:
+            layers += self.load_gpkg_layers(planes, ("roof_planes",), context, self.PLANES)
+        return {self.OUTPUT: out, self.REPORT: report, self.PLANES: planes, self.LAYERS: layers}
