@@ -30,6 +30,10 @@ struct RoofPlaneHypothesis {
   // the sweep over this patch: in conflicts it yields to every found plane
   // (completion fills gaps, it does not overrule direct evidence).
   bool derived = false;
+  // Accepted without the verification's height test (the images could not
+  // tell its height; its lines placed it): in conflicts it yields to every
+  // plane whose height the images confirmed.
+  bool height_from_lines = false;
   // RMS reprojection residual (px) of those of its supporting 3D lines
   // that have one, and how many do (0: residual unknown).
   double reprojection_rms_px = 0;

@@ -175,6 +175,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   std::iota(by_score.begin(), by_score.end(), 0);
   std::stable_sort(by_score.begin(), by_score.end(), [&](int a, int b) {
     if (p[a].derived != p[b].derived) return !p[a].derived;
+    if (p[a].height_from_lines != p[b].height_from_lines) return !p[a].height_from_lines;
     return p[a].score > p[b].score;
   });
   std::vector<std::string> rejected;

@@ -71,8 +71,9 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
                                const GroupingOptions& options = {});
 
 // Conflict management: strongest first (RoofPlaneHypothesis::score, e.g.
-// patch area x verified photometric score; derived planes after all found
-// ones), a plane whose patch overlaps a kept one's by more than max_overlap
+// patch area x verified photometric score; planes accepted on their lines
+// after those the images confirmed, derived planes after all found ones),
+// a plane whose patch overlaps a kept one's by more than max_overlap
 // is dropped. Returns the reasons.
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           double max_overlap);

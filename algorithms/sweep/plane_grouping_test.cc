@@ -129,6 +129,34 @@ TEST(PlaneGrouping, DerivedPlanesYieldToFoundOnesInConflicts) {
   EXPECT_EQ(rejected[0].rfind("derived: overlaps the stronger found", 0), 0u) << rejected[0];
 }
 
+TEST(PlaneGrouping, PlanesAcceptedOnTheirLinesYieldToConfirmedOnes) {
+  RoofPlaneHypothesis confirmed, on_lines, derived;
+  confirmed.id = "confirmed";
+  confirmed.patch = {{0, 0}, {10, 0}, {10, 5}, {0, 5}};
+  confirmed.score = 1;
+  on_lines.id = "on lines";
+  on_lines.patch = {{0, 0}, {20, 0}, {20, 6}, {0, 6}};
+  on_lines.score = 100;  // larger, but the images could not tell its height
+  on_lines.height_from_lines = true;
+  derived.id = "derived";
+  derived.patch = {{30, 0}, {40, 0}, {40, 6}, {30, 6}};
+  derived.score = 1000;
+  derived.derived = true;
+  // Elsewhere, a plane accepted on its lines is still found: it goes
+  // before a derived one, whatever their scores.
+  RoofPlaneHypothesis on_lines_too = on_lines;
+  on_lines_too.id = "on lines too";
+  on_lines_too.patch = derived.patch;
+  std::vector<RoofPlaneHypothesis> planes = {on_lines, derived, confirmed, on_lines_too};
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, 0.5);
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "confirmed");
+  EXPECT_EQ(planes[1].id, "on lines too");
+  ASSERT_EQ(rejected.size(), 2u);
+  EXPECT_EQ(rejected[0].rfind("on lines: overlaps the stronger confirmed", 0), 0u) << rejected[0];
+  EXPECT_EQ(rejected[1].rfind("derived: overlaps the stronger on lines too", 0), 0u) << rejected[1];
+}
+
 TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
   Gable g;
   const std::vector<HalfPlane> hps = {

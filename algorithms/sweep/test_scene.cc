@@ -106,7 +106,7 @@ cv::Mat RenderView(const TestScene& scene, const Block& block, int view) {
             best = t;
             const double xs = st.x() * q.u.norm(), ys = st.y() * q.v.norm();
             colour = q.colour;
-            if (q.textured) colour += 0.3f * waves[qi].At(xs, ys);
+            if (q.textured) colour += 0.3f * waves[qi].At(q.courses_along_u ? 0.1 * xs : xs, ys);
           }
           acc += colour;
         }

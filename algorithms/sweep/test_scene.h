@@ -16,6 +16,9 @@ namespace sweep_test {
 struct Quad {
   Eigen::Vector3d origin, u, v;  // points origin + s u + t v, s, t in [0, 1]
   bool textured = true;
+  // Texture stretched tenfold along u (wavelengths of 2.5-25 m): tile
+  // courses parallel to u.
+  bool courses_along_u = false;
   Eigen::Vector3f colour = Eigen::Vector3f(0.5f, 0.4f, 0.35f);
   uint32_t seed = 1;
 };

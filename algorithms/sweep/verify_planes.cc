@@ -31,13 +31,19 @@ bool OnPlane(const Camera& cam, const Pose& pose, const Eigen::Vector4d& pl,
   return true;
 }
 
-// Parallax (px) per metre of height at X between the view nearest in plan
-// and the view where it is largest.
-double ParallaxPerMetre(const Block& block, const Eigen::Vector3d& X) {
+// Image motion (px) per metre of height at X in each view that sees it,
+// relative to the view nearest in plan, with the plan direction of the
+// baseline to that view (zero for the nearest view itself).
+struct Parallax {
+  Eigen::Vector2d motion, baseline;
+};
+
+std::vector<Parallax> RelativeParallax(const Block& block, const Eigen::Vector3d& X) {
   const Eigen::Vector3d up(0, 0, 1);
   int ref = -1;
   double best = std::numeric_limits<double>::infinity();
-  std::vector<std::pair<int, Eigen::Vector2d>> motion;
+  std::vector<Parallax> out;
+  std::vector<Eigen::Vector2d> centres;
   for (int v = 0; v < static_cast<int>(block.views.size()); ++v) {
     const View& view = block.views[v];
     const Camera& cam = block.CameraOf(view);
@@ -45,14 +51,61 @@ double ParallaxPerMetre(const Block& block, const Eigen::Vector3d& X) {
     const auto p1 = Project(cam, view.pose, X + up);
     if (!p0 || !p1 || p0->x() < 0 || p0->y() < 0 || p0->x() > cam.width || p0->y() > cam.height)
       continue;
-    motion.emplace_back(v, *p1 - *p0);
+    out.push_back({*p1 - *p0, Eigen::Vector2d::Zero()});
+    centres.push_back(view.pose.C.head<2>());
     const double d = (view.pose.C - X).head<2>().norm();
-    if (d < best) best = d, ref = static_cast<int>(motion.size()) - 1;
+    if (d < best) best = d, ref = static_cast<int>(out.size()) - 1;
   }
+  if (ref < 0) return out;
+  const Eigen::Vector2d m0 = out[ref].motion;
+  for (size_t i = 0; i < out.size(); ++i) {
+    out[i].motion -= m0;
+    const Eigen::Vector2d b = centres[i] - centres[ref];
+    if (b.norm() > 1e-9) out[i].baseline = b.normalized();
+  }
+  return out;
+}
+
+// Parallax (px) per metre of height between the view nearest in plan and
+// the view where it is largest.
+double ParallaxPerMetre(const std::vector<Parallax>& views) {
   double k = 0;
-  for (size_t i = 0; i < motion.size(); ++i)
-    k = std::max(k, (motion[i].second - motion[ref].second).norm());
+  for (const Parallax& p : views) k = std::max(k, p.motion.norm());
   return k;
+}
+
+// The same, counting only the part of each view's motion that moves the
+// texture across itself: `texture` is the windows' structure tensor in plan
+// coordinates, and the image motion of a height change runs along the
+// baseline (the epipolar direction, for near-nadir views).
+double ParallaxAcrossTexture(const std::vector<Parallax>& views, const Eigen::Matrix2d& texture) {
+  if (!(texture.trace() > 0)) return 0;
+  double k = 0;
+  for (const Parallax& p : views)
+    k = std::max(
+        k, p.motion.norm() *
+               std::sqrt(std::max(0.0, p.baseline.dot(texture * p.baseline)) / texture.trace()));
+  return k;
+}
+
+// True when one of the plane's lines of at least min_length_m crosses the
+// baseline of largest parallax at min_angle_deg or more.
+bool LineCrossesBaseline(const std::vector<Parallax>& views,
+                         const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
+                         double min_length_m, double min_angle_deg) {
+  const Parallax* widest = nullptr;
+  for (const Parallax& p : views)
+    if (!widest || p.motion.norm() > widest->motion.norm()) widest = &p;
+  if (!widest || widest->baseline.isZero()) return false;
+  const double min_sin = std::sin(min_angle_deg * M_PI / 180);
+  for (const auto& l : lines) {
+    const Eigen::Vector2d d = l[1] - l[0];
+    if (d.norm() < min_length_m) continue;
+    const Eigen::Vector2d u = d.normalized();
+    if (std::abs(u.x() * widest->baseline.y() - u.y() * widest->baseline.x()) >= min_sin)
+      return true;
+  }
+  return false;
 }
 
 struct Scores {
@@ -61,13 +114,39 @@ struct Scores {
   // Per textured sample: its index in the visiting order and its Cor+, so
   // that two planes can be compared on the same samples.
   std::vector<std::pair<size_t, double>> values;
+  // With ScorePlane's `texture`: the sum over the samples of their
+  // reference windows' structure tensors in plan coordinates, each
+  // normalised to trace 1 (which way the texture varies).
+  Eigen::Matrix2d texture = Eigen::Matrix2d::Zero();
 };
+
+// Structure tensor (sum of gradient outer products) of a w x w window,
+// carried into plan coordinates at X through the view's local mapping.
+Eigen::Matrix2d PlanStructureTensor(const std::vector<float>& win, int w, const Camera& cam,
+                                    const Pose& pose, const Eigen::Vector3d& X) {
+  Eigen::Matrix2d t = Eigen::Matrix2d::Zero();
+  for (int y = 1; y < w - 1; ++y)
+    for (int x = 1; x < w - 1; ++x) {
+      const Eigen::Vector2d g(0.5 * (win[y * w + x + 1] - win[y * w + x - 1]),
+                              0.5 * (win[(y + 1) * w + x] - win[(y - 1) * w + x]));
+      t += g * g.transpose();
+    }
+  const double h = 0.1;
+  const auto p0 = Project(cam, pose, X);
+  const auto px = Project(cam, pose, X + Eigen::Vector3d(h, 0, 0));
+  const auto py = Project(cam, pose, X + Eigen::Vector3d(0, h, 0));
+  if (!p0 || !px || !py) return Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d J;  // image px per plan metre
+  J.col(0) = (*px - *p0) / h;
+  J.col(1) = (*py - *p0) / h;
+  return J.transpose() * t * J;
+}
 
 // Mean Cor+ of the samples for one plane; samples whose reference window
 // is flat are skipped.
 Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
                   const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector4d& pl,
-                  const VerifyOptions& o) {
+                  const VerifyOptions& o, bool texture = false) {
   Scores s;
   const int r = o.ncc_radius, w = 2 * r + 1;
   const int n_views = static_cast<int>(block.views.size());
@@ -129,6 +208,10 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
     double var = 0;
     for (float& v : ref) v -= static_cast<float>(mean), var += v * v;
     if (std::sqrt(var / (w * w)) < o.min_texture) continue;
+    if (texture) {
+      const Eigen::Matrix2d t = PlanStructureTensor(ref, w, rcam, rpose, lifted[probe[0]]);
+      if (t.trace() > 0) s.texture += t / t.trace();
+    }
     double point_sum = 0;
     int point_n = 0;
     for (size_t i = 0; i < seen.size(); ++i) {
@@ -234,7 +317,8 @@ std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : h.patch) c += q;
     c /= static_cast<double>(h.patch.size());
-    const double k = ParallaxPerMetre(block, {c.x(), c.y(), 0.5 * (h.z_lo + h.z_hi)});
+    const double k =
+        ParallaxPerMetre(RelativeParallax(block, {c.x(), c.y(), 0.5 * (h.z_lo + h.z_hi)}));
     if (!(k > 0)) return;
     // The coarse pass needs only the profile's peak: a quarter of the
     // samples find it as well at a quarter of the cost.
@@ -281,7 +365,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // spacing_m: the grid is refined for them, so that the texture, not the
     // grid, decides whether a face can be verified.
     const std::vector<Eigen::Vector3d> samples = PatchSamples(p.patch, o);
-    const Scores at = ScorePlane(block, grey, samples, p.plane, o);
+    const Scores at = ScorePlane(block, grey, samples, p.plane, o, /*texture=*/true);
     v.samples = at.n;
     if (at.n < o.min_samples) {
       v.score = std::numeric_limits<double>::quiet_NaN();
@@ -295,7 +379,9 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : p.patch) c += q;
     c /= static_cast<double>(p.patch.size());
-    const double k = ParallaxPerMetre(block, {c.x(), c.y(), PlaneZ(p.plane, c.x(), c.y())});
+    const std::vector<Parallax> parallax =
+        RelativeParallax(block, {c.x(), c.y(), PlaneZ(p.plane, c.x(), c.y())});
+    const double k = ParallaxPerMetre(parallax);
     v.offset_m = std::clamp(k > 0 ? o.offset_parallax_px / k : o.max_offset_m, o.min_offset_m,
                             o.max_offset_m);
     Eigen::Vector4d below = p.plane, above = p.plane;
@@ -339,12 +425,21 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       v.tilt_difference = v.score - v.score_tilted;
       v.tilt_se = 0;
     }
+    // Where the offset cannot move the texture across itself by the
+    // window's half-width, the moved planes correlate as well as this one
+    // whatever its height: its lines decide, if one of them crosses the
+    // baselines (see VerifyOptions::height_from_crossing_lines).
+    const bool height_fails = v.score < std::max(v.score_below, v.score_above) + o.min_margin;
+    const bool on_lines = height_fails && o.height_from_crossing_lines &&
+                          v.offset_m * ParallaxAcrossTexture(parallax, at.texture) < o.ncc_radius &&
+                          LineCrossesBaseline(parallax, p.lines_xy, o.crossing_line_min_length_m,
+                                              o.crossing_line_min_angle_deg);
     char buf[200];
     if (v.score < o.min_score) {
       std::snprintf(buf, sizeof buf, "photometric score %.2f < %.2f over %d samples", v.score,
                     o.min_score, v.samples);
       v.reason = buf;
-    } else if (v.score < std::max(v.score_below, v.score_above) + o.min_margin) {
+    } else if (height_fails && !on_lines) {
       std::snprintf(buf, sizeof buf,
                     "height not confirmed: score %.2f, %.1f m %s %.2f (margin %.2f needed)",
                     v.score, v.offset_m, v.score_below > v.score_above ? "lower" : "higher",
@@ -358,6 +453,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       v.reason = buf;
     } else {
       v.accepted = true;
+      v.height_confirmed = !height_fails;
     }
   });
   return out;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 
 #include "algorithms/sweep/test_scene.h"
@@ -114,6 +115,53 @@ TEST(VerifyPlanes, UntexturedPatchCannotBeVerified) {
   EXPECT_FALSE(v[0].accepted);
   EXPECT_TRUE(std::isnan(v[0].score));
   EXPECT_NE(v[0].reason.find("cannot be verified"), std::string::npos) << v[0].reason;
+}
+
+// The face with tile courses along its eave (x), seen by the two views of
+// one strip (baseline along x): a height change moves the texture along
+// itself, and the planes moved up and down correlate as well as the true
+// one.
+TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
+  Quad f = Face(true);
+  f.courses_along_u = true;
+  TestScene scene;
+  scene.quads = {f};
+  Block strip = sweep_test::FourViewBlock();
+  strip.views.resize(2);  // (-12, -8) and (12, -8)
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, strip);
+  const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-5, 6), Eigen::Vector2d(5, 6)};
+  const std::array<Eigen::Vector2d, 2> verge = {Eigen::Vector2d(-5, 0), Eigen::Vector2d(-5, 6)};
+  RoofPlaneHypothesis along = Hypothesis(f), across = Hypothesis(f);
+  along.lines_xy = {eave};
+  across.lines_xy = {eave, verge};
+  NullProgress progress;
+  const auto v = VerifyPlanes(strip, images, {along, across}, VerifyOptions(), progress);
+  ASSERT_EQ(v.size(), 2u);
+  // Lines along the baseline: the height stays unconfirmed.
+  EXPECT_FALSE(v[0].accepted);
+  EXPECT_EQ(v[0].reason.rfind("height not confirmed", 0), 0u) << v[0].reason;
+  EXPECT_GT(v[0].score, 0.6);  // the texture itself correlates well
+  // The verge crosses the baseline: accepted on its lines, and marked so.
+  EXPECT_TRUE(v[1].accepted) << v[1].reason;
+  EXPECT_FALSE(v[1].height_confirmed);
+  // Without the option, the verge does not help.
+  VerifyOptions strict;
+  strict.height_from_crossing_lines = false;
+  const auto s = VerifyPlanes(strip, images, {across}, strict, progress);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_FALSE(s[0].accepted);
+
+  // Views of two strips see the courses move across themselves: the images
+  // decide, and a plane 1.5 m too high is refused whatever its lines.
+  RoofPlaneHypothesis high = Hypothesis(f, 1.5);
+  high.lines_xy = {eave, verge};
+  const Block block = sweep_test::FourViewBlock();
+  const auto w = VerifyPlanes(block, sweep_test::RenderAll(scene, block), {across, high},
+                              VerifyOptions(), progress);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_TRUE(w[0].accepted) << w[0].reason;
+  EXPECT_TRUE(w[0].height_confirmed);
+  EXPECT_FALSE(w[1].accepted) << w[1].score;
 }
 
 TEST(BestHorizontalHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {

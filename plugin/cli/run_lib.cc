@@ -80,6 +80,7 @@ void KeepVerified(std::vector<RoofPlaneHypothesis> planes,
     }
     planes[i].similarity = checks[i].score;
     planes[i].score = std::abs(SignedArea(planes[i].patch)) * checks[i].score;
+    planes[i].height_from_lines = !checks[i].height_confirmed;
     kept->push_back(std::move(planes[i]));
   }
 }
@@ -135,6 +136,8 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
     }
     f.integers["lines"] = h.lines;
     f.integers["derived"] = h.derived;
+    // Accepted on its lines where the images could not tell its height.
+    f.integers["height_from_lines"] = t.check.accepted && !t.check.height_confirmed;
     f.integers["samples"] = t.check.samples;
     f.reals["longest_line_m"] = h.longest_line_m;
     f.reals["slope_deg"] = std::acos(std::clamp(std::abs(h.plane[2]), 0.0, 1.0)) * 180 / M_PI;
