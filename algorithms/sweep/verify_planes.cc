@@ -365,7 +365,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // spacing_m: the grid is refined for them, so that the texture, not the
     // grid, decides whether a face can be verified.
     const std::vector<Eigen::Vector3d> samples = PatchSamples(p.patch, o);
-    const Scores at = ScorePlane(block, grey, samples, p.plane, o, /*texture=*/true);
+    const Scores at = ScorePlane(block, grey, samples, p.plane, o,
+                                 /*texture=*/o.height_from_crossing_lines);
     v.samples = at.n;
     if (at.n < o.min_samples) {
       v.score = std::numeric_limits<double>::quiet_NaN();
