@@ -66,12 +66,19 @@ std::vector<Parallax> RelativeParallax(const Block& block, const Eigen::Vector3d
   return out;
 }
 
+// The view of largest parallax; nullptr when none sees the point.
+const Parallax* Widest(const std::vector<Parallax>& views) {
+  const Parallax* widest = nullptr;
+  for (const Parallax& p : views)
+    if (!widest || p.motion.norm() > widest->motion.norm()) widest = &p;
+  return widest;
+}
+
 // Parallax (px) per metre of height between the view nearest in plan and
 // the view where it is largest.
 double ParallaxPerMetre(const std::vector<Parallax>& views) {
-  double k = 0;
-  for (const Parallax& p : views) k = std::max(k, p.motion.norm());
-  return k;
+  const Parallax* widest = Widest(views);
+  return widest ? widest->motion.norm() : 0.0;
 }
 
 // The same, counting only the part of each view's motion that moves the
@@ -93,9 +100,7 @@ double ParallaxAcrossTexture(const std::vector<Parallax>& views, const Eigen::Ma
 bool LineCrossesBaseline(const std::vector<Parallax>& views,
                          const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
                          double min_length_m, double min_angle_deg) {
-  const Parallax* widest = nullptr;
-  for (const Parallax& p : views)
-    if (!widest || p.motion.norm() > widest->motion.norm()) widest = &p;
+  const Parallax* widest = Widest(views);
   if (!widest || widest->baseline.isZero()) return false;
   const double min_sin = std::sin(min_angle_deg * M_PI / 180);
   for (const auto& l : lines) {

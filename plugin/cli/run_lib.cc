@@ -60,14 +60,15 @@ std::optional<Eigen::Vector4d> BlockExtent(const Block& block) {
   return any ? std::optional<Eigen::Vector4d>(e) : std::nullopt;
 }
 
-// Appends the planes the verification confirmed to `kept`, scored by the
-// verified evidence (patch area x score); the others' reasons to `rejected`.
 // A roof plane hypothesis as verified, for the -planes layer.
 struct PlaneTrace {
   RoofPlaneHypothesis plane;
   PlaneVerification check;
 };
 
+// Appends the planes the verification confirmed to `kept`, scored by the
+// verified evidence (patch area x score); the others' reasons to `rejected`;
+// with `traces`, every plane and its check.
 void KeepVerified(std::vector<RoofPlaneHypothesis> planes,
                   const std::vector<PlaneVerification>& checks,
                   std::vector<RoofPlaneHypothesis>* kept, std::vector<std::string>* rejected,
@@ -117,6 +118,7 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
     f.strings["plane"] = h.id;
     const auto built = building_of.find(h.id);
     const auto why = reason_of.find(h.id);
+    const auto failed = failed_with.find(h.id);
     if (!t.check.accepted) {
       f.strings["status"] = "rejected";
       f.strings["reason"] = t.check.reason;
@@ -126,9 +128,9 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
     } else if (why != reason_of.end()) {
       f.strings["status"] = "rejected";
       f.strings["reason"] = why->second;
-    } else if (failed_with.count(h.id)) {
+    } else if (failed != failed_with.end()) {
       f.strings["status"] = "not built";
-      f.strings["reason"] = failed_with[h.id];
+      f.strings["reason"] = failed->second;
     } else {
       // Not expected: every plane is built or has a reason.
       f.strings["status"] = "not built";
