@@ -116,8 +116,8 @@ bool LineCrossesBaseline(const std::vector<Parallax>& views,
 struct Scores {
   double sum = 0;
   int n = 0;
-  // Per textured sample: its index in the visiting order and its Cor+, so
-  // that two planes can be compared on the same samples.
+  // Per textured sample: its index in the samples and its Cor+, so that two
+  // planes can be compared on the same samples.
   std::vector<std::pair<size_t, double>> values;
   // With ScorePlane's `texture`: the sum over the samples of their
   // reference windows' structure tensors in plan coordinates, each
@@ -249,7 +249,7 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
     if (point_n == 0) continue;
     s.sum += point_sum / point_n;
     ++s.n;
-    s.values.emplace_back(j, point_sum / point_n);
+    s.values.emplace_back((j * stride) % n_samples, point_sum / point_n);
   }
   return s;
 }
@@ -286,7 +286,8 @@ std::vector<cv::Mat> GreyImages(const std::vector<cv::Mat>& images) {
 
 // Plan-view grid points inside a convex patch, refined for small patches
 // (see VerifyOptions::min_spacing_m).
-std::vector<Eigen::Vector3d> PatchSamples(const Ring2& patch, const VerifyOptions& o) {
+std::vector<Eigen::Vector3d> PatchSamples(const Ring2& patch, const VerifyOptions& o,
+                                          double* spacing_used = nullptr) {
   // A grid finer than 1 cm adds no pixels at any aerial GSD, only time.
   const double min_spacing = std::max(o.min_spacing_m, 0.01);
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -300,10 +301,66 @@ std::vector<Eigen::Vector3d> PatchSamples(const Ring2& patch, const VerifyOption
       for (double x = x0 + 0.5 * spacing; x < x1; x += spacing)
         if (InsideConvex(patch, {x, y})) samples.emplace_back(x, y, 0.0);
     if (static_cast<int>(samples.size()) >= 4 * o.min_samples ||
-        0.5 * spacing < min_spacing * (1 - 1e-9))
+        0.5 * spacing < min_spacing * (1 - 1e-9)) {
+      if (spacing_used) *spacing_used = spacing;
       break;
+    }
   }
   return samples;
+}
+
+// The patch cut back to where the images do not refute the plane (see
+// VerifyOptions::trim_patch); empty when nothing is cut. Each sample votes
+// with its neighbours within trim_vote_radius_m: Cor+ below
+// trim_max_score refutes, above supports, untextured or unvisited samples
+// abstain. The samples the vote keeps, each as its grid cell, and the
+// plane's lines span the trimmed patch.
+Ring2 TrimmedPatch(const Ring2& patch, const std::vector<Eigen::Vector3d>& samples, double spacing,
+                   const Scores& at, const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
+                   const VerifyOptions& o) {
+  if (samples.empty() || !(spacing > 0)) return {};
+  double x0 = samples[0].x(), y0 = samples[0].y(), x1 = x0, y1 = y0;
+  for (const auto& q : samples)
+    x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
+    y1 = std::max(y1, q.y());
+  const int nx = static_cast<int>(std::lround((x1 - x0) / spacing)) + 1;
+  const int ny = static_cast<int>(std::lround((y1 - y0) / spacing)) + 1;
+  auto cell = [&](const Eigen::Vector3d& q) {
+    return static_cast<int>(std::lround((q.y() - y0) / spacing)) * nx +
+           static_cast<int>(std::lround((q.x() - x0) / spacing));
+  };
+  std::vector<signed char> vote(static_cast<size_t>(nx) * ny, 0);
+  bool refuted = false;
+  for (const auto& [k, cor] : at.values) {
+    vote[cell(samples[k])] = cor < o.trim_max_score ? -1 : 1;
+    refuted = refuted || cor < o.trim_max_score;
+  }
+  if (!refuted) return {};
+  const int r = std::max(0, static_cast<int>(std::floor(o.trim_vote_radius_m / spacing)));
+  std::vector<Eigen::Vector2d> kept;
+  bool dropped = false;
+  for (const auto& q : samples) {
+    const int c = cell(q), cx = c % nx, cy = c / nx;
+    int sum = 0;
+    for (int y = std::max(0, cy - r); y <= std::min(ny - 1, cy + r); ++y)
+      for (int x = std::max(0, cx - r); x <= std::min(nx - 1, cx + r); ++x)
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) sum += vote[y * nx + x];
+    if (sum < 0) {
+      dropped = true;
+      continue;
+    }
+    for (const double dx : {-0.5, 0.5})
+      for (const double dy : {-0.5, 0.5})
+        kept.emplace_back(q.x() + dx * spacing, q.y() + dy * spacing);
+  }
+  if (!dropped) return {};
+  for (const auto& l : lines) kept.insert(kept.end(), l.begin(), l.end());
+  const Ring2 trimmed = IntersectConvex(ConvexHull(std::move(kept)), patch);
+  // A cut that leaves (nearly) all of the patch only rounds its corners to
+  // the grid.
+  const double area = std::abs(SignedArea(patch));
+  if (trimmed.size() < 3 || std::abs(SignedArea(trimmed)) >= (1 - 1e-3) * area) return {};
+  return trimmed;
 }
 
 }  // namespace
@@ -369,7 +426,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // Small faces (dormers, hip ends, porches) hold few grid points at
     // spacing_m: the grid is refined for them, so that the texture, not the
     // grid, decides whether a face can be verified.
-    const std::vector<Eigen::Vector3d> samples = PatchSamples(p.patch, o);
+    double spacing = 0;
+    const std::vector<Eigen::Vector3d> samples = PatchSamples(p.patch, o, &spacing);
     const Scores at = ScorePlane(block, grey, samples, p.plane, o,
                                  /*texture=*/o.height_from_crossing_lines);
     v.samples = at.n;
@@ -460,6 +518,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     } else {
       v.accepted = true;
       v.height_confirmed = !height_fails;
+      if (o.trim_patch) v.patch = TrimmedPatch(p.patch, samples, spacing, at, p.lines_xy, o);
     }
   });
   return out;

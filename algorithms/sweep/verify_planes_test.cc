@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/sweep/test_scene.h"
 
 namespace roofsweep {
@@ -77,6 +78,42 @@ TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
     EXPECT_FALSE(v[k].reason.empty()) << k;
     EXPECT_LT(v[k].score, v[0].score) << k;
   }
+}
+
+// Delineation by the verification: a patch that runs 2 m past the eave
+// (y = 6) over the ground 6 m below is cut back to the face; the patch of
+// the first test, all on the face, keeps (nearly) all of its area; with the
+// option off nothing is cut.
+TEST(VerifyPlanes, PatchIsCutBackToWhereTheImagesSeeThePlane) {
+  TestScene scene;
+  scene.quads = {Face(true)};
+  RoofPlaneHypothesis past = Hypothesis(Face(true));
+  past.patch = {{-4.5, 0.5}, {4.5, 0.5}, {4.5, 8.0}, {-4.5, 8.0}};
+  past.lines_xy = {{Eigen::Vector2d(-4.5, 0.5), Eigen::Vector2d(4.5, 0.5)}};
+  const RoofPlaneHypothesis on_face = Hypothesis(Face(true));
+  const auto v = Verify(scene, {past, on_face});
+  ASSERT_EQ(v.size(), 2u);
+  ASSERT_TRUE(v[0].accepted) << v[0].reason;
+  ASSERT_GE(v[0].patch.size(), 3u);
+  double y_max = -1e9, y_min = 1e9;
+  for (const auto& q : v[0].patch) y_max = std::max(y_max, q.y()), y_min = std::min(y_min, q.y());
+  // The vote over trim_vote_radius_m and the samples' cells bound how close
+  // the cut comes to the eave (measured: 0.75 m past it).
+  const double reach = VerifyOptions{}.trim_vote_radius_m + 0.125;
+  EXPECT_LE(y_max, 6.0 + reach);
+  EXPECT_GE(y_max, 6.0 - 0.25);
+  EXPECT_NEAR(y_min, 0.5, 1e-6);  // the line's side stays
+  EXPECT_LE(SignedArea(v[0].patch), 9.0 * (5.5 + reach));
+  ASSERT_TRUE(v[1].accepted) << v[1].reason;
+  if (!v[1].patch.empty()) EXPECT_GT(SignedArea(v[1].patch), 0.97 * 9.0 * 5.0);
+
+  VerifyOptions off;
+  off.trim_patch = false;
+  const Block block = sweep_test::FourViewBlock();
+  NullProgress progress;
+  const auto k = VerifyPlanes(block, sweep_test::RenderAll(scene, block), {past}, off, progress);
+  ASSERT_EQ(k.size(), 1u);
+  EXPECT_TRUE(k[0].patch.empty());
 }
 
 // A dormer-sized patch (1.4 x 1.2 m in plan) holds fewer than min_samples

@@ -74,6 +74,7 @@ void KeepVerified(std::vector<RoofPlaneHypothesis> planes,
                   std::vector<RoofPlaneHypothesis>* kept, std::vector<std::string>* rejected,
                   std::vector<PlaneTrace>* traces) {
   for (size_t i = 0; i < planes.size(); ++i) {
+    if (!checks[i].patch.empty()) planes[i].patch = checks[i].patch;
     if (traces) traces->push_back({planes[i], checks[i]});
     if (!checks[i].accepted) {
       rejected->push_back(planes[i].id + ": " + checks[i].reason);
