@@ -456,6 +456,10 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     const Scores hi = ScorePlane(block, grey, samples, above, o);
     v.score_below = lo.n ? lo.sum / lo.n : 0.0;
     v.score_above = hi.n ? hi.sum / hi.n : 0.0;
+    if (!PairedDifference(at, lo, &v.below_difference, &v.below_se))
+      v.below_difference = v.score - v.score_below, v.below_se = 0;
+    if (!PairedDifference(at, hi, &v.above_difference, &v.above_se))
+      v.above_difference = v.score - v.score_above, v.above_se = 0;
     // Tilted alternatives: the plane turned about the patch centre so that
     // the patch's farthest point along x (then y) moves by the offset; they
     // catch a wrong slope that a height shift cannot.

@@ -107,6 +107,8 @@ struct PlaneVerification {
   // Cor+ of the plane minus that of the best tilted one over the samples
   // both scored, and its standard error.
   double tilt_difference = 0, tilt_se = 0;
+  // The same against the plane moved down and up by the offset.
+  double below_difference = 0, below_se = 0, above_difference = 0, above_se = 0;
   double offset_m = 0;  // height offset of the alternatives (at the patch edge when tilted)
   int samples = 0;      // textured samples used
   bool accepted = false;

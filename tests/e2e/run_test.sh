@@ -46,8 +46,21 @@ PY
     || fail run_planes_layer "roof_planes layer incomplete or inconsistent with the run"
 import json, re, sqlite3, sys
 planes, report, gml = sys.argv[1:]
-rows = sqlite3.connect(planes).execute("select status, reason, building from roof_planes").fetchall()
+db = sqlite3.connect(planes)
+rows = db.execute("select status, reason, building from roof_planes").fetchall()
 assert rows, "no rows"
+# The verification's evidence agrees with its verdict (default margins: 0.1
+# over the moved planes, the tilt test at 0 + 1 standard error).
+checked = 0
+for s, r, score, lo, hi, dt, se, hfl in db.execute(
+        "select status, reason, score, score_below, score_above, tilt_difference, tilt_se, "
+        "height_from_lines from roof_planes where score is not null"):
+    if s == "built" and not hfl:
+        assert score >= max(lo, hi) + 0.1 - 1e-9 and dt >= -se - 1e-9, (score, lo, hi, dt, se)
+        checked += 1
+    if r and r.startswith("height not confirmed"):
+        assert score < max(lo, hi) + 0.1, (r, score, lo, hi)
+assert checked, "no built plane with its evidence"
 assert all(s in ("built", "rejected", "not built") for s, _, _ in rows), rows
 assert all(r and r != "no reason recorded" for s, r, _ in rows if s != "built"), rows
 built = [b for s, _, b in rows if s == "built"]
