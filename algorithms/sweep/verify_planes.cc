@@ -284,29 +284,45 @@ std::vector<cv::Mat> GreyImages(const std::vector<cv::Mat>& images) {
   return grey;
 }
 
-// Plan-view grid points inside a convex patch, refined for small patches
-// (see VerifyOptions::min_spacing_m).
-std::vector<Eigen::Vector3d> PatchSamples(const Ring2& patch, const VerifyOptions& o,
-                                          double* spacing_used = nullptr) {
+// Plan-view grid points inside a convex patch, each with its grid cell.
+struct SampleGrid {
+  std::vector<Eigen::Vector3d> points;  // z = 0
+  std::vector<int> cell;                // ix + iy * nx of each point
+  double spacing = 0;
+  int nx = 0, ny = 0;
+};
+
+// The grid of a patch, refined for small patches (see
+// VerifyOptions::min_spacing_m).
+SampleGrid PatchSamples(const Ring2& patch, const VerifyOptions& o) {
   // A grid finer than 1 cm adds no pixels at any aerial GSD, only time.
   const double min_spacing = std::max(o.min_spacing_m, 0.01);
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const auto& q : patch)
     x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
     y1 = std::max(y1, q.y());
-  std::vector<Eigen::Vector3d> samples;
+  SampleGrid g;
+  std::vector<std::pair<int, int>> at;
   for (double spacing = o.spacing_m;; spacing *= 0.5) {
-    samples.clear();
-    for (double y = y0 + 0.5 * spacing; y < y1; y += spacing)
-      for (double x = x0 + 0.5 * spacing; x < x1; x += spacing)
-        if (InsideConvex(patch, {x, y})) samples.emplace_back(x, y, 0.0);
-    if (static_cast<int>(samples.size()) >= 4 * o.min_samples ||
+    g.points.clear();
+    at.clear();
+    g.nx = g.ny = 0;
+    for (double y = y0 + 0.5 * spacing; y < y1; y += spacing, ++g.ny) {
+      int ix = 0;
+      for (double x = x0 + 0.5 * spacing; x < x1; x += spacing, ++ix)
+        if (InsideConvex(patch, {x, y}))
+          g.points.emplace_back(x, y, 0.0), at.emplace_back(ix, g.ny);
+      g.nx = std::max(g.nx, ix);
+    }
+    if (static_cast<int>(g.points.size()) >= 4 * o.min_samples ||
         0.5 * spacing < min_spacing * (1 - 1e-9)) {
-      if (spacing_used) *spacing_used = spacing;
+      g.spacing = spacing;
       break;
     }
   }
-  return samples;
+  g.cell.reserve(at.size());
+  for (const auto& [ix, iy] : at) g.cell.push_back(ix + iy * g.nx);
+  return g;
 }
 
 // The patch cut back to where the images do not refute the plane (see
@@ -315,43 +331,33 @@ std::vector<Eigen::Vector3d> PatchSamples(const Ring2& patch, const VerifyOption
 // trim_max_score refutes, above supports, untextured or unvisited samples
 // abstain. The samples the vote keeps, each as its grid cell, and the
 // plane's lines span the trimmed patch.
-Ring2 TrimmedPatch(const Ring2& patch, const std::vector<Eigen::Vector3d>& samples, double spacing,
-                   const Scores& at, const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
+Ring2 TrimmedPatch(const Ring2& patch, const SampleGrid& g, const Scores& at,
+                   const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
                    const VerifyOptions& o) {
-  if (samples.empty() || !(spacing > 0)) return {};
-  double x0 = samples[0].x(), y0 = samples[0].y(), x1 = x0, y1 = y0;
-  for (const auto& q : samples)
-    x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
-    y1 = std::max(y1, q.y());
-  const int nx = static_cast<int>(std::lround((x1 - x0) / spacing)) + 1;
-  const int ny = static_cast<int>(std::lround((y1 - y0) / spacing)) + 1;
-  auto cell = [&](const Eigen::Vector3d& q) {
-    return static_cast<int>(std::lround((q.y() - y0) / spacing)) * nx +
-           static_cast<int>(std::lround((q.x() - x0) / spacing));
-  };
-  std::vector<signed char> vote(static_cast<size_t>(nx) * ny, 0);
+  if (g.points.empty() || !(g.spacing > 0)) return {};
+  std::vector<signed char> vote(static_cast<size_t>(g.nx) * g.ny, 0);
   bool refuted = false;
   for (const auto& [k, cor] : at.values) {
-    vote[cell(samples[k])] = cor < o.trim_max_score ? -1 : 1;
+    vote[g.cell[k]] = cor < o.trim_max_score ? -1 : 1;
     refuted = refuted || cor < o.trim_max_score;
   }
   if (!refuted) return {};
-  const int r = std::max(0, static_cast<int>(std::floor(o.trim_vote_radius_m / spacing)));
+  const int r = std::max(0, static_cast<int>(std::floor(o.trim_vote_radius_m / g.spacing)));
   std::vector<Eigen::Vector2d> kept;
   bool dropped = false;
-  for (const auto& q : samples) {
-    const int c = cell(q), cx = c % nx, cy = c / nx;
+  for (size_t i = 0; i < g.points.size(); ++i) {
+    const int cx = g.cell[i] % g.nx, cy = g.cell[i] / g.nx;
     int sum = 0;
-    for (int y = std::max(0, cy - r); y <= std::min(ny - 1, cy + r); ++y)
-      for (int x = std::max(0, cx - r); x <= std::min(nx - 1, cx + r); ++x)
-        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) sum += vote[y * nx + x];
+    for (int y = std::max(0, cy - r); y <= std::min(g.ny - 1, cy + r); ++y)
+      for (int x = std::max(0, cx - r); x <= std::min(g.nx - 1, cx + r); ++x)
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) sum += vote[y * g.nx + x];
     if (sum < 0) {
       dropped = true;
       continue;
     }
     for (const double dx : {-0.5, 0.5})
       for (const double dy : {-0.5, 0.5})
-        kept.emplace_back(q.x() + dx * spacing, q.y() + dy * spacing);
+        kept.emplace_back(g.points[i].x() + dx * g.spacing, g.points[i].y() + dy * g.spacing);
   }
   if (!dropped) return {};
   for (const auto& l : lines) kept.insert(kept.end(), l.begin(), l.end());
@@ -375,7 +381,7 @@ std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<
   tbb::parallel_for(size_t{0}, searches.size(), [&](size_t i) {
     const HeightSearch& h = searches[i];
     if (h.patch.size() < 3 || !(h.z_hi > h.z_lo)) return;
-    const std::vector<Eigen::Vector3d> samples = PatchSamples(h.patch, o);
+    const std::vector<Eigen::Vector3d> samples = PatchSamples(h.patch, o).points;
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : h.patch) c += q;
     c /= static_cast<double>(h.patch.size());
@@ -426,8 +432,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // Small faces (dormers, hip ends, porches) hold few grid points at
     // spacing_m: the grid is refined for them, so that the texture, not the
     // grid, decides whether a face can be verified.
-    double spacing = 0;
-    const std::vector<Eigen::Vector3d> samples = PatchSamples(p.patch, o, &spacing);
+    const SampleGrid grid = PatchSamples(p.patch, o);
+    const std::vector<Eigen::Vector3d>& samples = grid.points;
     const Scores at = ScorePlane(block, grey, samples, p.plane, o,
                                  /*texture=*/o.height_from_crossing_lines);
     v.samples = at.n;
@@ -522,7 +528,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     } else {
       v.accepted = true;
       v.height_confirmed = !height_fails;
-      if (o.trim_patch) v.patch = TrimmedPatch(p.patch, samples, spacing, at, p.lines_xy, o);
+      if (o.trim_patch) v.patch = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
     }
   });
   return out;
