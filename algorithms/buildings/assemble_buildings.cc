@@ -635,6 +635,95 @@ Ring2 SquareCorners(const Ring2& outline, const std::vector<RoofPlaneHypothesis>
   return r.size() >= 3 && SignedArea(r) > 1e-9 ? r : outline;
 }
 
+// A cut line in plan: the points where normal . x + offset = 0.
+struct PartyCut {
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();
+  double offset = 0;
+  // The stretch of the cut line that cuts: the party line extended by the
+  // face's depth at both ends (over the ridge into the facing roof face).
+  Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
+};
+
+// True when the cut's stretch crosses the patch: the patch within 1 mm of
+// the cut line, then between the stretch's ends.
+bool CutReaches(const PartyCut& c, const Ring2& patch) {
+  const Eigen::Vector2d along = c.to - c.from;
+  Ring2 r = ClipHalfPlane(patch, c.normal.x(), c.normal.y(), c.offset - 1e-3);
+  r = ClipHalfPlane(r, -c.normal.x(), -c.normal.y(), -c.offset - 1e-3);
+  r = ClipHalfPlane(r, -along.x(), -along.y(), along.dot(c.from));
+  r = ClipHalfPlane(r, along.x(), along.y(), -along.dot(c.to));
+  return r.size() >= 3;
+}
+
+// The first party line (see AssemblyOptions::split_at_party_lines) among
+// the supporting lines of `members`, as the cut along it.
+std::optional<PartyCut> FindPartyCut(const std::vector<RoofPlaneHypothesis>& planes,
+                                     const std::vector<int>& members, const AssemblyOptions& o) {
+  const double cos_max = std::cos(o.party_max_angle_deg * kDeg);
+  for (int i : members) {
+    const RoofPlaneHypothesis& p = planes[i];
+    const Eigen::Vector2d g = p.plane.head<2>();
+    // |n_xy| = sin(slope) for a unit normal.
+    if (g.norm() < std::sin(o.party_min_slope_deg * kDeg) || p.patch.size() < 3) continue;
+    const Eigen::Vector2d fall = g.normalized(), across(-fall.y(), fall.x());
+    for (const auto& l : p.lines_xy) {
+      const Eigen::Vector2d d = l[1] - l[0];
+      const double len = d.norm();
+      if (len < 1e-6 || std::abs(d.dot(fall)) < cos_max * len) continue;
+      const Ring2 near = GrowConvex(p.patch, o.adjacency_gap_m);
+      if (!InsideConvex(near, l[0]) || !InsideConvex(near, l[1])) continue;
+      // The cut runs down the fall line through the line's middle.
+      const Eigen::Vector2d m = 0.5 * (l[0] + l[1]);
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      double width_lo = 0, width_hi = 0;
+      for (const auto& q : p.patch) {
+        const double along = (q - m).dot(fall), side = (q - m).dot(across);
+        lo = std::min(lo, along), hi = std::max(hi, along);
+        width_lo = std::max(width_lo, -side), width_hi = std::max(width_hi, side);
+      }
+      if (width_lo < o.party_min_width_m || width_hi < o.party_min_width_m) continue;
+      // The face's depth along the cut: the chord of the patch.
+      const Ring2 chord =
+          ClipHalfPlane(ClipHalfPlane(p.patch, across.x(), across.y(), -across.dot(m) - 1e-3),
+                        -across.x(), -across.y(), across.dot(m) - 1e-3);
+      double c_lo = std::numeric_limits<double>::infinity(), c_hi = -c_lo;
+      for (const auto& q : chord) {
+        const double along = (q - m).dot(fall);
+        c_lo = std::min(c_lo, along), c_hi = std::max(c_hi, along);
+      }
+      if (c_hi - c_lo < o.party_min_depth_m ||
+          std::abs(d.dot(fall)) < o.party_min_span * (c_hi - c_lo))
+        continue;
+      const double reach = c_hi - c_lo;
+      const PartyCut cut{across, -across.dot(m), m + (c_lo - reach) * fall,
+                         m + (c_hi + reach) * fall};
+      // Every other face the cut runs through must show the party wall too
+      // (a line along the cut): one roof face may span several units where
+      // its neighbour across the ridge is divided.
+      bool confirmed = true;
+      for (int k : members) {
+        const RoofPlaneHypothesis& q = planes[k];
+        if (k == i || !CutReaches(cut, q.patch) ||
+            std::abs(q.plane.head<3>().dot(p.plane.head<3>())) >= cos_max)
+          continue;
+        bool seen = false;
+        for (const auto& lq : q.lines_xy) {
+          const Eigen::Vector2d dq = lq[1] - lq[0];
+          seen = seen ||
+                 (dq.norm() >= o.party_confirm_length_m &&
+                  std::abs(dq.dot(across)) <= std::sin(o.party_max_angle_deg * kDeg) * dq.norm() &&
+                  std::abs(across.dot(lq[0]) + cut.offset) <= o.party_confirm_offset_m &&
+                  std::abs(across.dot(lq[1]) + cut.offset) <= o.party_confirm_offset_m);
+        }
+        confirmed = confirmed && seen;
+      }
+      if (!confirmed) continue;
+      return cut;
+    }
+  }
+  return std::nullopt;
+}
+
 // Connected pieces of `active` (ascending plane indices) under `links`,
 // each ascending, ordered by their smallest index.
 std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
@@ -739,11 +828,64 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   // Per footprint: 0 not tried yet, 1 built over its whole outline, -1 not.
   std::vector<int> whole(footprints.size(), 0);
 
+  // building_group per hypothesis root; the two sides of a party cut are
+  // buildings of their own.
+  std::map<int, double> group_of;
   int building_no = 0;
   while (!groups.empty()) {
     const int root = groups.front().first;
-    const std::vector<int> members = std::move(groups.front().second);
+    std::vector<int> members = std::move(groups.front().second);
     groups.pop_front();
+    if (o.split_at_party_lines && footprints.empty()) {
+      if (const auto cut = FindPartyCut(planes, members, o)) {
+        std::vector<int> side[2];
+        for (int i : members) {
+          const Ring2 a =
+              ClipHalfPlane(planes[i].patch, cut->normal.x(), cut->normal.y(), cut->offset);
+          const Ring2 b =
+              ClipHalfPlane(planes[i].patch, -cut->normal.x(), -cut->normal.y(), -cut->offset);
+          const double area_a = a.size() >= 3 ? std::abs(SignedArea(a)) : 0.0;
+          const double area_b = b.size() >= 3 ? std::abs(SignedArea(b)) : 0.0;
+          // Beyond the cut's stretch a plane is not cut; it goes with the
+          // side that holds more of it.
+          const bool reached = CutReaches(*cut, planes[i].patch);
+          if (area_b < o.min_face_area_m2 || (!reached && area_a >= area_b)) {
+            side[0].push_back(i);
+          } else if (area_a < o.min_face_area_m2 || !reached) {
+            side[1].push_back(i);
+          } else {
+            // Both pieces go on: this plane keeps side a, a copy side b.
+            const int j = static_cast<int>(planes.size());
+            RoofPlaneHypothesis q = planes[i];
+            q.patch = b;
+            q.id += " (party cut)";
+            planes[i].patch = a;
+            planes.push_back(std::move(q));
+            grown[i] = GrowConvex(planes[i].patch, o.adjacency_gap_m);
+            grown.push_back(GrowConvex(planes[j].patch, o.adjacency_gap_m));
+            footprint_of.push_back(-1);
+            origin.push_back(origin[i]);
+            std::vector<int> links = part_links[i];
+            part_links.push_back(std::move(links));
+            for (int k : part_links[i]) part_links[k].push_back(j);
+            side[0].push_back(i);
+            side[1].push_back(j);
+          }
+        }
+        if (!side[0].empty() && !side[1].empty()) {
+          ++res.party_cuts;
+          group_of[side[1].front()] = static_cast<double>(input.size() + res.party_cuts);
+          if (!group_of.count(root))
+            group_of[side[0].front()] = group_of[root] = static_cast<double>(origin[uf.Find(root)]);
+          else
+            group_of[side[0].front()] = group_of[root];
+          groups.emplace_front(side[1].front(), std::move(side[1]));
+          groups.emplace_front(side[0].front(), std::move(side[0]));
+          ++res.hypotheses;
+          continue;
+        }
+      }
+    }
     ++building_no;
     const std::string bname = StrFormat("building hypothesis %d", building_no);
     const int f = footprint_of[root];
@@ -861,7 +1003,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     Building b = solid ? std::move(*solid) : BuildSolid(planes, active, *env, o);
     b.id = StrFormat("rs_b%04d", static_cast<int>(res.model.buildings.size()) + 1);
     // Convex parts of one building (split at valleys) share this number.
-    b.double_attributes["building_group"] = static_cast<double>(origin[uf.Find(root)]);
+    const auto group = group_of.find(root);
+    b.double_attributes["building_group"] =
+        group != group_of.end() ? group->second : static_cast<double>(origin[uf.Find(root)]);
     if (fp) {
       b.string_attributes["footprint_id"] = fp->id;
       b.string_attributes["outline"] =
@@ -873,11 +1017,12 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       reject("solid not valid (" + check.Summary() + ")");
       continue;
     }
-    res.planes_used += static_cast<int>(active.size());
     for (int i : active) res.plane_building[origin[i]] = b.id;
     if (f >= 0) ++built_over[f];
     res.model.buildings.push_back(std::move(b));
   }
+  // Input planes, not their pieces (cut at footprints or party walls).
+  for (const std::string& b : res.plane_building) res.planes_used += !b.empty();
   // Every footprint ends as a building or a reason.
   for (size_t f = 0; f < footprints.size(); ++f) {
     if (built_over[f] > 0) continue;

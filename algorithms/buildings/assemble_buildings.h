@@ -96,6 +96,32 @@ struct AssemblyOptions {
   // like a sliver.
   bool split_hidden = true;
   double hidden_max_fraction = 0.25;
+  // Party walls: terraced houses often share one plane across their roofs
+  // (same eave, ridge and pitch), which the sweep groups into one; where
+  // the neighbours' roofs differ (material, colour, a seam), matching finds
+  // a line down the shared plane at the party wall. A supporting line of a
+  // sloped plane (at least party_min_slope_deg), within the face, that runs
+  // down its fall line (within party_max_angle_deg) over at least
+  // party_min_span of the face's depth there (at least party_min_depth_m:
+  // a porch roof or a dormer's face does not run through a building), with
+  // at least party_min_width_m of the face on either side, cuts
+  // its building hypothesis in two along it (without footprints; with them
+  // the footprints cut). The cut reaches one face depth past the line at
+  // either end (into the facing face over the ridge); planes beyond go
+  // whole with the side that holds more of them. Verges lie at a face's
+  // edge, dormers, chimneys and roof windows span a part of its depth.
+  bool split_at_party_lines = true;
+  double party_min_slope_deg = 10.0;
+  double party_max_angle_deg = 10.0;
+  double party_min_span = 0.6;
+  double party_min_width_m = 3.0;
+  double party_min_depth_m = 2.5;
+  // Every other face the cut runs through (not coplanar with the line's)
+  // must carry a line along the cut, at least party_confirm_length_m long
+  // within party_confirm_offset_m of it: real city models divide one face
+  // and not the facing one (Berlin 3910_5819).
+  double party_confirm_length_m = 1.0;
+  double party_confirm_offset_m = 0.5;
   // Buildings whose outline is smaller than this are logged and dropped.
   double min_footprint_m2 = 5.0;
   // With footprints, a plane over one needs only these height and line
@@ -156,6 +182,7 @@ struct AssemblyResult {
   // dropped on its own has its reason in `rejected`).
   std::vector<std::string> plane_building, plane_reason;
   int planes_in = 0, planes_used = 0, hypotheses = 0;
+  int party_cuts = 0;  // hypotheses cut in two at a party line
 };
 
 // Turns roof planes into closed LoD2 buildings: planes are grouped by

@@ -658,4 +658,55 @@ TEST(Polygon2, IntersectNonConvex) {
 }
 
 }  // namespace
+
+// Two terraced houses of 6 m under one 12 x 8 m gable: lines down both
+// faces at x = 6 (a party wall seen as a change of roof) cut them apart; a
+// line down one face only (the facing face spans both units, as real city
+// models have it), a verge at the face's edge, a dormer's 2 m side and a
+// line across the slope do not.
+TEST(AssembleBuildings, PartyLineDownTheSlopeCutsTerracedHouses) {
+  using Lines = std::vector<std::array<Eigen::Vector2d, 2>>;
+  auto row = [](Lines front_lines, Lines back_lines) {
+    const double ridge_z = 6 + 4 * std::tan(35 * M_PI / 180);
+    std::vector<RoofPlaneHypothesis> p = {
+        Hyp(SlopedPlane({0, 4, ridge_z}, 35, -90), {{0, 0}, {12, 0}, {12, 4}, {0, 4}}),
+        Hyp(SlopedPlane({0, 4, ridge_z}, 35, 90), {{0, 4}, {12, 4}, {12, 8}, {0, 8}})};
+    p[0].lines_xy = std::move(front_lines);
+    p[1].lines_xy = std::move(back_lines);
+    p[0].id = "front", p[1].id = "back";
+    return p;
+  };
+  const Lines front = {{{{6, 0.2}, {6, 3.8}}}}, back = {{{{6.2, 4.5}, {6.2, 7.5}}}};
+  const AssemblyResult cut = AssembleBuildings(row(front, back), Flat(0));
+  ASSERT_EQ(cut.model.buildings.size(), 2u);
+  EXPECT_EQ(cut.party_cuts, 1);
+  ExpectAllValid(cut);
+  std::set<double> groups;
+  for (const Building& b : cut.model.buildings) {
+    EXPECT_EQ(b.roof_type, roof_type::kGabled) << b.id;
+    double xmin = 1e9, xmax = -1e9;
+    for (const Surface& s : b.surfaces)
+      for (const Polygon3& poly : s.polygons)
+        for (const auto& v : poly.exterior)
+          xmin = std::min(xmin, v.x()), xmax = std::max(xmax, v.x());
+    // The cut runs through one of the two lines.
+    EXPECT_NEAR(xmax - xmin, 6.1, 0.1 + 1e-6) << b.id;
+    groups.insert(b.double_attributes.at("building_group"));
+  }
+  EXPECT_EQ(groups.size(), 2u);
+  // Both input planes roof a building: counted once each.
+  EXPECT_EQ(cut.planes_used, 2);
+  for (const Lines& lines : {Lines{{{{0.1, 0.2}, {0.1, 3.8}}}},  // verge
+                             Lines{{{{6, 1.0}, {6, 3.0}}}},      // dormer side
+                             Lines{{{{1, 2}, {11, 2}}}}}) {      // across
+    const AssemblyResult whole = AssembleBuildings(row(lines, {}), Flat(0));
+    EXPECT_EQ(whole.model.buildings.size(), 1u);
+    EXPECT_EQ(whole.party_cuts, 0);
+  }
+  EXPECT_EQ(AssembleBuildings(row(front, {}), Flat(0)).model.buildings.size(), 1u);
+  AssemblyOptions off;
+  off.split_at_party_lines = false;
+  EXPECT_EQ(AssembleBuildings(row(front, back), Flat(0), off).model.buildings.size(), 1u);
+}
+
 }  // namespace roofsweep

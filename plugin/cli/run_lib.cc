@@ -482,10 +482,13 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   if (trace)
     WritePlaneLayer(r.planes, traces, roof_planes, assembled, out.rejected, frame, manifest.crs,
                     r.overwrite);
-  out.stages.push_back({"LoD2 buildings",
-                        StrFormat("%d of %d hypotheses, %d planes used", out.buildings,
-                                  assembled.hypotheses, assembled.planes_used),
-                        Since(t0)});
+  out.stages.push_back(
+      {"LoD2 buildings",
+       StrFormat("%d of %d hypotheses, %d planes used", out.buildings, assembled.hypotheses,
+                 assembled.planes_used) +
+           (assembled.party_cuts > 0 ? StrFormat(", %d cut at party walls", assembled.party_cuts)
+                                     : std::string()),
+       Since(t0)});
 
   t0 = Clock::now();
   CityModel model = std::move(assembled.model);
