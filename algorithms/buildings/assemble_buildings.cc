@@ -644,12 +644,16 @@ struct PartyCut {
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
 };
 
-// True when the cut's stretch crosses the patch: the patch within 1 mm of
-// the cut line, then between the stretch's ends.
+// The part of the patch within 1 mm of the line normal . x + offset = 0.
+Ring2 AlongLine(const Ring2& patch, const Eigen::Vector2d& normal, double offset) {
+  return ClipHalfPlane(ClipHalfPlane(patch, normal.x(), normal.y(), offset - 1e-3), -normal.x(),
+                       -normal.y(), -offset - 1e-3);
+}
+
+// True when the cut's stretch crosses the patch.
 bool CutReaches(const PartyCut& c, const Ring2& patch) {
   const Eigen::Vector2d along = c.to - c.from;
-  Ring2 r = ClipHalfPlane(patch, c.normal.x(), c.normal.y(), c.offset - 1e-3);
-  r = ClipHalfPlane(r, -c.normal.x(), -c.normal.y(), -c.offset - 1e-3);
+  Ring2 r = AlongLine(patch, c.normal, c.offset);
   r = ClipHalfPlane(r, -along.x(), -along.y(), along.dot(c.from));
   r = ClipHalfPlane(r, along.x(), along.y(), -along.dot(c.to));
   return r.size() >= 3;
@@ -660,32 +664,29 @@ bool CutReaches(const PartyCut& c, const Ring2& patch) {
 std::optional<PartyCut> FindPartyCut(const std::vector<RoofPlaneHypothesis>& planes,
                                      const std::vector<int>& members, const AssemblyOptions& o) {
   const double cos_max = std::cos(o.party_max_angle_deg * kDeg);
+  const double sin_max = std::sin(o.party_max_angle_deg * kDeg);
   for (int i : members) {
     const RoofPlaneHypothesis& p = planes[i];
     const Eigen::Vector2d g = p.plane.head<2>();
     // |n_xy| = sin(slope) for a unit normal.
     if (g.norm() < std::sin(o.party_min_slope_deg * kDeg) || p.patch.size() < 3) continue;
     const Eigen::Vector2d fall = g.normalized(), across(-fall.y(), fall.x());
+    const Ring2 near = GrowConvex(p.patch, o.adjacency_gap_m);
     for (const auto& l : p.lines_xy) {
       const Eigen::Vector2d d = l[1] - l[0];
       const double len = d.norm();
       if (len < 1e-6 || std::abs(d.dot(fall)) < cos_max * len) continue;
-      const Ring2 near = GrowConvex(p.patch, o.adjacency_gap_m);
       if (!InsideConvex(near, l[0]) || !InsideConvex(near, l[1])) continue;
       // The cut runs down the fall line through the line's middle.
       const Eigen::Vector2d m = 0.5 * (l[0] + l[1]);
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       double width_lo = 0, width_hi = 0;
       for (const auto& q : p.patch) {
-        const double along = (q - m).dot(fall), side = (q - m).dot(across);
-        lo = std::min(lo, along), hi = std::max(hi, along);
+        const double side = (q - m).dot(across);
         width_lo = std::max(width_lo, -side), width_hi = std::max(width_hi, side);
       }
       if (width_lo < o.party_min_width_m || width_hi < o.party_min_width_m) continue;
       // The face's depth along the cut: the chord of the patch.
-      const Ring2 chord =
-          ClipHalfPlane(ClipHalfPlane(p.patch, across.x(), across.y(), -across.dot(m) - 1e-3),
-                        -across.x(), -across.y(), across.dot(m) - 1e-3);
+      const Ring2 chord = AlongLine(p.patch, across, -across.dot(m));
       double c_lo = std::numeric_limits<double>::infinity(), c_hi = -c_lo;
       for (const auto& q : chord) {
         const double along = (q - m).dot(fall);
@@ -709,11 +710,10 @@ std::optional<PartyCut> FindPartyCut(const std::vector<RoofPlaneHypothesis>& pla
         bool seen = false;
         for (const auto& lq : q.lines_xy) {
           const Eigen::Vector2d dq = lq[1] - lq[0];
-          seen = seen ||
-                 (dq.norm() >= o.party_confirm_length_m &&
-                  std::abs(dq.dot(across)) <= std::sin(o.party_max_angle_deg * kDeg) * dq.norm() &&
-                  std::abs(across.dot(lq[0]) + cut.offset) <= o.party_confirm_offset_m &&
-                  std::abs(across.dot(lq[1]) + cut.offset) <= o.party_confirm_offset_m);
+          seen = seen || (dq.norm() >= o.party_confirm_length_m &&
+                          std::abs(dq.dot(across)) <= sin_max * dq.norm() &&
+                          std::abs(across.dot(lq[0]) + cut.offset) <= o.party_confirm_offset_m &&
+                          std::abs(across.dot(lq[1]) + cut.offset) <= o.party_confirm_offset_m);
         }
         confirmed = confirmed && seen;
       }
@@ -875,10 +875,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         if (!side[0].empty() && !side[1].empty()) {
           ++res.party_cuts;
           group_of[side[1].front()] = static_cast<double>(input.size() + res.party_cuts);
-          if (!group_of.count(root))
-            group_of[side[0].front()] = group_of[root] = static_cast<double>(origin[uf.Find(root)]);
-          else
-            group_of[side[0].front()] = group_of[root];
+          const auto kept = group_of.find(root);
+          group_of[side[0].front()] =
+              kept != group_of.end() ? kept->second : static_cast<double>(origin[uf.Find(root)]);
           groups.emplace_front(side[1].front(), std::move(side[1]));
           groups.emplace_front(side[0].front(), std::move(side[0]));
           ++res.hypotheses;

@@ -255,8 +255,9 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
 }
 
 // Mean and standard error of Cor+(a) - Cor+(b) over the samples both
-// scored; false when fewer than two are common.
-bool PairedDifference(const Scores& a, const Scores& b, double* mean, double* se) {
+// scored; with fewer than two in common, the difference of the two means
+// (each over its own samples) with standard error 0.
+void PairedDifference(const Scores& a, const Scores& b, double* mean, double* se) {
   std::unordered_map<size_t, double> of_b;
   for (const auto& [j, c] : b.values) of_b.emplace(j, c);
   double sum = 0, sum2 = 0;
@@ -267,10 +268,13 @@ bool PairedDifference(const Scores& a, const Scores& b, double* mean, double* se
     const double d = c - it->second;
     sum += d, sum2 += d * d, ++n;
   }
-  if (n < 2) return false;
+  if (n < 2) {
+    *mean = (a.n ? a.sum / a.n : 0.0) - (b.n ? b.sum / b.n : 0.0);
+    *se = 0;
+    return;
+  }
   *mean = sum / n;
   *se = std::sqrt(std::max(0.0, (sum2 - n * *mean * *mean) / (n - 1)) / n);
-  return true;
 }
 
 std::vector<cv::Mat> GreyImages(const std::vector<cv::Mat>& images) {
@@ -462,10 +466,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     const Scores hi = ScorePlane(block, grey, samples, above, o);
     v.score_below = lo.n ? lo.sum / lo.n : 0.0;
     v.score_above = hi.n ? hi.sum / hi.n : 0.0;
-    if (!PairedDifference(at, lo, &v.below_difference, &v.below_se))
-      v.below_difference = v.score - v.score_below, v.below_se = 0;
-    if (!PairedDifference(at, hi, &v.above_difference, &v.above_se))
-      v.above_difference = v.score - v.score_above, v.above_se = 0;
+    PairedDifference(at, lo, &v.below_difference, &v.below_se);
+    PairedDifference(at, hi, &v.above_difference, &v.above_se);
     // Tilted alternatives: the plane turned about the patch centre so that
     // the patch's farthest point along x (then y) moves by the offset; they
     // catch a wrong slope that a height shift cannot.
@@ -495,10 +497,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // each plane's own textured samples differ a little (the reference
     // window moves with the plane), and the difference of two noisy means
     // over different samples refused true planes on a tie.
-    if (!PairedDifference(at, best_tilt, &v.tilt_difference, &v.tilt_se)) {
-      v.tilt_difference = v.score - v.score_tilted;
-      v.tilt_se = 0;
-    }
+    PairedDifference(at, best_tilt, &v.tilt_difference, &v.tilt_se);
     // Where the offset cannot move the texture across itself by the
     // window's half-width, the moved planes correlate as well as this one
     // whatever its height: its lines decide, if one of them crosses the

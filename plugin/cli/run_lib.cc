@@ -145,16 +145,19 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
     f.reals["longest_line_m"] = h.longest_line_m;
     f.reals["slope_deg"] = std::acos(std::clamp(std::abs(h.plane[2]), 0.0, 1.0)) * 180 / M_PI;
     f.reals["area_m2"] = std::abs(SignedArea(h.patch));
-    if (std::isfinite(t.check.score)) f.reals["score"] = t.check.score;
-    f.reals["score_below"] = t.check.score_below;
-    f.reals["score_above"] = t.check.score_above;
-    f.reals["below_difference"] = t.check.below_difference;
-    f.reals["below_se"] = t.check.below_se;
-    f.reals["above_difference"] = t.check.above_difference;
-    f.reals["above_se"] = t.check.above_se;
-    f.reals["tilt_difference"] = t.check.tilt_difference;
-    f.reals["tilt_se"] = t.check.tilt_se;
-    f.reals["offset_m"] = t.check.offset_m;
+    // The evidence exists only for planes the verification could score.
+    if (std::isfinite(t.check.score)) {
+      f.reals["score"] = t.check.score;
+      f.reals["score_below"] = t.check.score_below;
+      f.reals["score_above"] = t.check.score_above;
+      f.reals["below_difference"] = t.check.below_difference;
+      f.reals["below_se"] = t.check.below_se;
+      f.reals["above_difference"] = t.check.above_difference;
+      f.reals["above_se"] = t.check.above_se;
+      f.reals["tilt_difference"] = t.check.tilt_difference;
+      f.reals["tilt_se"] = t.check.tilt_se;
+      f.reals["offset_m"] = t.check.offset_m;
+    }
     features.push_back(std::move(f));
   }
   FeatureLayerOptions lo;
