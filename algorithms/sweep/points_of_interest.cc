@@ -88,9 +88,27 @@ std::vector<BandPoint> BandPoints(const ViewTexture& texture, const Eigen::Vecto
       continue;
     near.push_back(s);
   }
+  // Per row only the columns where the row's pixel centres cross the band
+  // (a slanted band's bounding box is mostly outside it); the exact test
+  // below still decides.
+  const Eigen::Vector2d band[4] = {p0, p1, p1 + w * n, p0 + w * n};
   for (int r = r0; r <= r1; ++r) {
+    const double y = r + 0.5;
+    double lo = x1, hi = x0;
+    for (int e = 0; e < 4; ++e) {
+      const Eigen::Vector2d& a = band[e];
+      const Eigen::Vector2d& b = band[(e + 1) % 4];
+      if ((a.y() - y) * (b.y() - y) > 0) continue;
+      const double x =
+          a.y() == b.y() ? a.x() : a.x() + (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y());
+      lo = std::min({lo, x, a.y() == b.y() ? b.x() : x});
+      hi = std::max({hi, x, a.y() == b.y() ? b.x() : x});
+    }
+    if (lo > hi) continue;
     const uint8_t* row = texture.poi.ptr<uint8_t>(r);
-    for (int c = c0; c <= c1; ++c) {
+    const int from = std::max(c0, static_cast<int>(std::floor(lo - 0.5)) - 1);
+    const int to = std::min(c1, static_cast<int>(std::ceil(hi - 0.5)) + 1);
+    for (int c = from; c <= to; ++c) {
       if (!row[c]) continue;
       const Eigen::Vector2d x(c + 0.5, r + 0.5);
       const double t = (x - p0).dot(u), s = (x - p0).dot(n);

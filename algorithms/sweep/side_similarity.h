@@ -36,6 +36,14 @@ class SideSimilarity {
   // the active points (every view, active or not).
   double Evaluate(double theta, std::vector<double>* per_point = nullptr,
                   std::vector<double>* per_view = nullptr) const;
+  // Cor+^2 of every usable point (row) in every view (column) at theta,
+  // whatever is active; 0 where the window falls outside a view or does not
+  // correlate. Reduce turns it into Evaluate's results under the active
+  // points and views of the moment, exactly: several choices of them at one
+  // angle then cost one pass over the images.
+  std::vector<double> Correlations(double theta) const;
+  double Reduce(const std::vector<double>& correlations, std::vector<double>* per_point = nullptr,
+                std::vector<double>* per_view = nullptr) const;
 
   int PointCount() const { return static_cast<int>(points_.size()); }
   int ActiveCount() const;
@@ -60,6 +68,10 @@ class SideSimilarity {
     const Camera* camera = nullptr;
     const cv::Mat* grey = nullptr;
   };
+  // Correlations of the usable points (every one, or the active ones) in
+  // the views (every one, or the active ones); the rest stay 0.
+  void Correlate(double theta, bool all_points, bool all_views, std::vector<double>* table) const;
+
   const Camera* ref_camera_;
   const Pose* ref_pose_;
   const HalfPlaneFamily family_;
@@ -104,13 +116,19 @@ class AffineWindow {
   // `mapped`: the probes' measured pixel positions (pixel-centre convention
   // of the images, as Project returns them).
   AffineWindow(const std::array<Eigen::Vector2d, 5>& mapped, int r);
-  // Bilinear samples of the whole window into `values` ((2 r + 1)^2 of
-  // them) and their sum; false when a pixel falls outside the image.
-  bool Sample(const cv::Mat& image, float* values, double* sum) const;
+  // Bilinear samples of the whole window (CV_32F image) into `values`
+  // ((2 r + 1)^2 of them); false when a pixel falls outside the image.
+  bool Sample(const cv::Mat& image, float* values) const;
 
  private:
   int r_;
   Eigen::Vector2d origin_, dx_, dy_;
 };
+
+// sum(ref * (b - mean(b))) / |b - mean(b)| over n values: the normalised
+// cross-correlation of a zero-mean, unit-norm reference patch with window
+// b; 0 when b is flat. A reference that is only zero-mean gives the NCC
+// times its norm.
+double ZeroMeanCorrelation(const float* ref, const float* values, int n);
 
 }  // namespace roofsweep

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
 
 #include "algorithms/buildings/convex_polygon2.h"
@@ -59,11 +60,12 @@ std::vector<Segment2> Blockers(const std::vector<std::vector<Projected>>& projec
 // the plane through the reference view, and the options.extent_quantile of
 // their distances from the line is kept. A quantile, not the maximum, so
 // that a few points correlating by chance beyond the face do not stretch it.
+// `score`: each point's mean squared correlation at theta (Evaluate's
+// per_point).
 double FaceExtent(const Camera& camera, const Pose& pose, const HalfPlaneFamily& family,
-                  double theta, const SideSimilarity& sim, const std::vector<BandPoint>& points,
-                  const SweepOptions& o, std::vector<Eigen::Vector2d>* support) {
-  std::vector<double> score;
-  sim.Evaluate(theta, &score);
+                  double theta, const std::vector<double>& score,
+                  const std::vector<BandPoint>& points, const SweepOptions& o,
+                  std::vector<Eigen::Vector2d>* support) {
   const Eigen::Vector4d plane = family.Plane(theta);
   const Eigen::Vector3d w = family.Direction(theta);
   std::vector<double> reach;
@@ -184,12 +186,15 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
     if (hp.profile[k] > hp.profile[k0]) k0 = k;
   }
   sim.SetActive(std::vector<bool>(n_points, true));
-  double theta = t_min + k0 * step;
+  double theta = std::min(t_min + k0 * step, t_max);
 
   // Outsiders (§3.4): points that do not correlate at the coarse maximum,
   // e.g. occluded or off the plane; keep at least the better half.
+  // Outliers, valid views and the refinement's start are all judged at
+  // this angle: one pass over the images serves the three.
+  const std::vector<double> at_coarse_max = sim.Correlations(theta);
   std::vector<double> score;
-  sim.Evaluate(theta, &score);
+  sim.Reduce(at_coarse_max, &score);
   {
     // The median bounds the threshold so that at most half is dropped.
     std::vector<double> sorted = score;
@@ -204,7 +209,7 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   // coarse maximum are probably occluded there and are left out.
   {
     std::vector<double> view_score;
-    sim.Evaluate(theta, nullptr, &view_score);
+    sim.Reduce(at_coarse_max, nullptr, &view_score);
     const double best = *std::max_element(view_score.begin(), view_score.end());
     std::vector<bool> valid(view_score.size());
     for (size_t i = 0; i < view_score.size(); ++i)
@@ -214,10 +219,16 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   }
 
   // Parabolic refinement, halving the bracket until it is below the
-  // tolerance.
-  auto eval = [&](double t) { return sim.Evaluate(std::clamp(t, t_min, t_max)); };
+  // tolerance. A step clamped to the bracket lands where Sim was just
+  // evaluated, so values are remembered by angle.
+  std::map<double, double> known;
+  auto eval = [&](double t) {
+    t = std::clamp(t, t_min, t_max);
+    const auto it = known.find(t);
+    return it != known.end() ? it->second : known[t] = sim.Evaluate(t);
+  };
   double h = step;
-  double s0 = eval(theta);
+  double s0 = known[theta] = sim.Reduce(at_coarse_max);
   for (;;) {
     const double sm = eval(theta - h), sp = eval(theta + h);
     const double denom = sm - 2 * s0 + sp;
@@ -232,14 +243,17 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
     h *= 0.5;
     s0 = eval(theta);
   }
-  hp.similarity = eval(theta);
+  // The face's extent needs each point's score at the maximum, which the
+  // same evaluation gives.
+  std::vector<double> score_at_max;
+  hp.similarity = sim.Evaluate(theta, &score_at_max);
   const double hc = o.curvature_step_deg * kDeg;
   hp.curvature = (eval(theta - hc) - 2 * hp.similarity + eval(theta + hc)) / (hc * hc);
   hp.theta_deg = theta / kDeg;
   hp.plane = family->Plane(theta);
   hp.extent_m = FaceExtent(block.CameraOf(block.views[hp.reference_view]),
-                           block.views[hp.reference_view].pose, *family, theta, sim, best_points, o,
-                           &hp.support);
+                           block.views[hp.reference_view].pose, *family, theta, score_at_max,
+                           best_points, o, &hp.support);
 
   if (hp.views < o.min_views) {
     hp.reason = Format("too few views (%.0f < %.0f)", hp.views, o.min_views);

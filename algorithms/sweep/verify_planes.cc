@@ -232,17 +232,11 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
         inside = p.has_value();
         if (inside) q[j] = *p;
       }
-      double m2 = 0;
-      inside = inside && AffineWindow(q, r).Sample(grey[v], other.data(), &m2);
+      inside = inside && AffineWindow(q, r).Sample(grey[v], other.data());
       if (!inside) continue;
-      m2 /= w * w;
-      double sxy = 0, syy = 0;
-      for (int k = 0; k < w * w; ++k) {
-        const double b = other[k] - m2;
-        sxy += ref[k] * b;
-        syy += b * b;
-      }
-      const double ncc = (var > 0 && syy > 0) ? sxy / std::sqrt(var * syy) : 0.0;
+      // ref is zero-mean but not unit-norm.
+      const double ncc =
+          var > 0 ? ZeroMeanCorrelation(ref.data(), other.data(), w * w) / std::sqrt(var) : 0.0;
       point_sum += std::max(0.0, ncc);
       ++point_n;
     }
