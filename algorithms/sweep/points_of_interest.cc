@@ -98,11 +98,13 @@ std::vector<BandPoint> BandPoints(const ViewTexture& texture, const Eigen::Vecto
     for (int e = 0; e < 4; ++e) {
       const Eigen::Vector2d& a = band[e];
       const Eigen::Vector2d& b = band[(e + 1) % 4];
-      if ((a.y() - y) * (b.y() - y) > 0) continue;
-      const double x =
+      if ((a.y() - y) * (b.y() - y) > 0) continue;  // the edge does not reach the row
+      // An edge lying on the row contributes both ends, any other its crossing.
+      const double xa =
           a.y() == b.y() ? a.x() : a.x() + (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y());
-      lo = std::min({lo, x, a.y() == b.y() ? b.x() : x});
-      hi = std::max({hi, x, a.y() == b.y() ? b.x() : x});
+      const double xb = a.y() == b.y() ? b.x() : xa;
+      lo = std::min({lo, xa, xb});
+      hi = std::max({hi, xa, xb});
     }
     if (lo > hi) continue;
     const uint8_t* row = texture.poi.ptr<uint8_t>(r);

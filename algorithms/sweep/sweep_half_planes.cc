@@ -188,11 +188,11 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   sim.SetActive(std::vector<bool>(n_points, true));
   double theta = std::min(t_min + k0 * step, t_max);
 
+  // Outsiders, valid views and the refinement's start are all judged at
+  // the coarse maximum: one pass over the images serves the three.
+  const std::vector<double> at_coarse_max = sim.Correlations(theta);
   // Outsiders (§3.4): points that do not correlate at the coarse maximum,
   // e.g. occluded or off the plane; keep at least the better half.
-  // Outliers, valid views and the refinement's start are all judged at
-  // this angle: one pass over the images serves the three.
-  const std::vector<double> at_coarse_max = sim.Correlations(theta);
   std::vector<double> score;
   sim.Reduce(at_coarse_max, &score);
   {
