@@ -109,6 +109,22 @@ EvalReport RunEval(const EvalRequest& r) {
     j = nlohmann::json::object();
     for (const auto& [stage, n] : losses.count)
       j[stage] = {{"count", n}, {"area_m2", losses.area_m2.at(stage)}};
+    // Per plane, so that a person can find each loss on the overlay: the
+    // counts alone do not tell a hip end from a dormer.
+    nlohmann::json& list = report.json["missed_roof_plane_list"];
+    list = nlohmann::json::array();
+    for (size_t i = 0; i < losses.stage.size(); ++i) {
+      if (losses.stage[i].empty()) continue;
+      const PlaneRecord& p = report.result.reference_planes[i];
+      const Building& b = truth.buildings[p.building];
+      const double slope = std::acos(std::min(1.0, std::abs(p.normal.z()))) * 180.0 / M_PI;
+      list.push_back({{"reference_plane", i},
+                      {"building_id", p.building_id},
+                      {"roof_type", RoofTypeName(b.roof_type)},
+                      {"plan_area_m2", p.plan_area},
+                      {"slope_deg", slope},
+                      {"stage", losses.stage[i]}});
+    }
   }
   report.json["inputs"] = {{"result", r.result}, {"truth", truth_path}};
   if (!r.png.empty()) {

@@ -82,6 +82,15 @@ import json, sys
 d = json.load(open(sys.argv[1]))
 p, m = d["roof_planes"], d["missed_roof_planes"]
 assert sum(v["count"] for v in m.values()) == p["n_reference"] - p["tp_reference"], (p, m)
+# The same planes one by one, with what a person needs to find them.
+items = d["missed_roof_plane_list"]
+assert len(items) == sum(v["count"] for v in m.values()), (len(items), m)
+for stage, v in m.items():
+    assert sum(1 for i in items if i["stage"] == stage) == v["count"], (stage, items)
+assert len({i["reference_plane"] for i in items}) == len(items), items
+for i in items:
+    assert i["building_id"] and i["roof_type"] and i["plan_area_m2"] > 0, i
+    assert 0 <= i["slope_deg"] < 90, i
 PY
   expect_fail run_eval_planes_wrong_layer "$WORK/none" "l\.gpkg: no layer 'roof_planes'" -- \
     eval "$WORK/b.gml" "$SIM" -planes "$WORK/l.gpkg"
