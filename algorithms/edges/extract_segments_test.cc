@@ -313,6 +313,14 @@ TEST(ExtractSegments, RejectsEmptyWrongTypeAndNaN) {
   cv::Mat inf_image(20, 20, CV_32FC1, cv::Scalar(0.5));
   inf_image.at<float>(2, 2) = std::numeric_limits<float>::infinity();
   EXPECT_THROW(ExtractSegments(inf_image, EdgeOptions{}), Error);
+  // +inf and -inf together sum to NaN, and are found too.
+  inf_image.at<float>(5, 9) = -std::numeric_limits<float>::infinity();
+  try {
+    ExtractSegments(inf_image, EdgeOptions{});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("x=2, y=2"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ExtractSegments, RejectsBadOptions) {
