@@ -21,6 +21,7 @@
 #include "algorithms/matching/correlation.h"
 #include "algorithms/matching/epipolar.h"
 #include "algorithms/matching/junction_completion.h"
+#include "algorithms/matching/junction_support.h"
 #include "algorithms/matching/line_triangulation.h"
 #include "algorithms/matching/residual_test.h"
 #include "algorithms/matching/view_features.h"
@@ -305,6 +306,22 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     items[n].score = hyps[n].h.score;
     items[n].keys = {{hyps[n].h.vi, hyps[n].h.si}, {hyps[n].h.vj, hyps[n].h.sj}};
     for (const auto& s : hyps[n].support) items[n].keys.push_back(s);
+  }
+  if (o.junction_ranking) {
+    std::vector<Segment3> segs(hyps.size());
+    std::vector<std::vector<std::pair<int, int>>> keys(hyps.size());
+    for (size_t n = 0; n < hyps.size(); ++n) {
+      segs[n] = hyps[n].h.line;
+      keys[n] = items[n].keys;
+    }
+    JunctionSupportOptions jo;
+    jo.distance_m = o.junction_rank_distance_m;
+    const std::vector<int> ends = JunctionSupport(segs, keys, jo);
+    for (size_t n = 0; n < hyps.size(); ++n) {
+      const double support = static_cast<double>(hyps[n].support.size());
+      const double correlation = hyps[n].h.score - support;
+      items[n].score = support + (ends[n] + correlation) / 3.0;
+    }
   }
   if (o.unique_matches) {
     const std::vector<char> unique = UnambiguousItems(items);

@@ -10,6 +10,7 @@
 #include "algorithms/matching/chromatic_test.h"
 #include "algorithms/matching/correlation.h"
 #include "algorithms/matching/epipolar.h"
+#include "algorithms/matching/junction_support.h"
 #include "algorithms/matching/line_triangulation.h"
 #include "algorithms/matching/robust_estimate.h"
 #include "algorithms/matching/view_features.h"
@@ -301,6 +302,42 @@ TEST(Assignment, RivalsOfEqualScoreBothGoAndOneLineInTwoViewPairsStays) {
   const std::vector<char> rivals = UnambiguousItems(items);
   EXPECT_TRUE(rivals[2]);
   EXPECT_FALSE(rivals[3]);
+}
+
+TEST(JunctionSupport, EndsOnOtherLinesCountRivalsAndCollinearOnesDoNot) {
+  using V = Eigen::Vector3d;
+  using Keys = std::vector<std::pair<int, int>>;
+  // An eave from (0,0,5) to (10,0,5) and two verges from its ends; the
+  // second verge stops 0.27 m short of the corner (the eave's end meets its
+  // prolongation).
+  std::vector<Segment3> lines = {
+      {V(0, 0, 5), V(10, 0, 5)},        // 0: eave
+      {V(0, 0.1, 5), V(0, 8, 8)},       // 1: verge at the eave's first end
+      {V(10, 0.25, 5.05), V(10, 8, 8)}  // 2: verge near its second end
+  };
+  std::vector<Keys> keys = {{{0, 1}, {1, 1}}, {{0, 2}, {1, 2}}, {{0, 3}, {1, 3}}};
+  // 3: the eave matched to the wrong tile course, 1.5 m lower: same first
+  //    segment (a rival), ends in mid-air.
+  lines.push_back({V(0, -0.6, 3.5), V(10, -0.6, 3.5)});
+  keys.push_back({{0, 1}, {1, 9}});
+  // 4: a collinear fragment on the eave: the same edge, no junction.
+  lines.push_back({V(3, 0.05, 5), V(6, 0.05, 5)});
+  keys.push_back({{0, 4}, {1, 4}});
+  std::vector<int> ends = JunctionSupport(lines, keys);
+  ASSERT_EQ(ends.size(), 5u);
+  EXPECT_EQ(ends[0], 2);
+  EXPECT_EQ(ends[1], 1);  // its upper end meets nothing
+  EXPECT_EQ(ends[2], 1);
+  EXPECT_EQ(ends[3], 0);
+  EXPECT_EQ(ends[4], 0);
+  // A line that shares a key with the eave (its support in a third view) is
+  // the same line, not a junction: the verge at the first end now counts
+  // for neither.
+  keys[1].push_back({2, 5});
+  keys[0].push_back({2, 5});
+  ends = JunctionSupport(lines, keys);
+  EXPECT_EQ(ends[0], 1);
+  EXPECT_EQ(ends[1], 0);
 }
 
 }  // namespace

@@ -135,6 +135,8 @@ test_wrong_usage() {
   expect_usage usage_missing_value_lco lines "Option -lco needs a value" -- lines "$SIM" -o "$WORK/u1.gpkg" -lco
   expect_usage usage_missing_output match "Missing option -o" -- match "$SIM"
   expect_usage usage_bad_number match "Option -min_length expects a number" -- match "$SIM" -o "$WORK/u1.gpkg" -min_length ten
+  expect_usage usage_negative_seed match "-seed must be 0 or more" -- match "$SIM" -o "$WORK/u1.gpkg" -seed -1
+  expect_usage usage_negative_seed_run run "-seed must be 0 or more" -- run "$SIM" -o "$WORK/u1.gml" -seed -1
   # Unknown format.
   expect_usage usage_unknown_format_convert convert "Unknown output format 'Bogus'" -- convert "$gt" "$WORK/u1.xyz" -of Bogus
   expect_usage usage_unknown_extension_convert convert "Cannot tell the format of .*u1.xyz" -- convert "$gt" "$WORK/u1.xyz"
@@ -142,7 +144,7 @@ test_wrong_usage() {
   expect_usage usage_unknown_format_lines lines "Unknown output format 'Bogus'" -- lines "$SIM" -o "$WORK/u1.gpkg" -of Bogus
   expect_usage usage_unknown_extension_match match "Cannot tell the vector format" -- match "$SIM" -o "$WORK/u1.xyz"
   expect_usage usage_unknown_import_format import "Unknown import format 'bogus'" -- import bogus "$SIM/orientation/opk.txt" -o "$WORK/u1.json"
-  for f in u1.gpkg u1.xyz u1.json; do [[ -e "$WORK/$f" ]] && fail "usage_left_$f" "output written"; done
+  for f in u1.gpkg u1.xyz u1.json u1.gml; do [[ -e "$WORK/$f" ]] && fail "usage_left_$f" "output written"; done
   # Output exists without -overwrite: refused before any work, file untouched.
   touch "$WORK/exists.gpkg" "$WORK/exists.json" "$WORK/exists.png"
   mkdir -p "$WORK/exists_dir"
