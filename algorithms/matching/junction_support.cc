@@ -18,9 +18,10 @@ using Value = std::pair<Box, int>;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Distance from p to segment s prolonged by `extend` at both ends.
-double DistanceToProlonged(const Eigen::Vector3d& p, const Segment3& s, double extend) {
-  const Eigen::Vector3d d = s.Direction();
+// Distance from p to segment s (unit direction d) prolonged by `extend`
+// at both ends.
+double DistanceToProlonged(const Eigen::Vector3d& p, const Segment3& s, const Eigen::Vector3d& d,
+                           double extend) {
   const double len = s.Length();
   const double t = std::clamp((p - s.a).dot(d), -extend, len + extend);
   return (p - (s.a + t * d)).norm();
@@ -43,6 +44,9 @@ std::vector<int> JunctionSupport(const std::vector<Segment3>& lines,
   const double pad = o.distance_m + o.extend_m;
   std::vector<Value> boxes;
   boxes.reserve(n);
+  // Once per line, not once per candidate pair.
+  std::vector<Eigen::Vector3d> dir(n);
+  for (int i = 0; i < n; ++i) dir[i] = lines[i].Direction();
   for (int i = 0; i < n; ++i) {
     const Segment3& s = lines[i];
     if (!(s.Length() > 0)) continue;
@@ -59,11 +63,12 @@ std::vector<int> JunctionSupport(const std::vector<Segment3>& lines,
     if (!(s.Length() > 0)) return;
     std::vector<Value> hits;
     for (const Eigen::Vector3d& e : {s.a, s.b}) {
+      hits.clear();  // the second end's candidates only (the first end's are far from it)
       tree.query(bgi::intersects(Point(e.x(), e.y(), e.z())), std::back_inserter(hits));
       for (const Value& h : hits) {
         const int j = h.second;
-        if (j == i || std::abs(s.Direction().dot(lines[j].Direction())) > max_cos) continue;
-        if (DistanceToProlonged(e, lines[j], o.extend_m) > o.distance_m) continue;
+        if (j == i || std::abs(dir[i].dot(dir[j])) > max_cos) continue;
+        if (DistanceToProlonged(e, lines[j], dir[j], o.extend_m) > o.distance_m) continue;
         if (ShareKey(keys[i], keys[j])) continue;
         ++out[i];
         break;

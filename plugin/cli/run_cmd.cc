@@ -2,39 +2,16 @@
 
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
+#include "plugin/cli/match_flags.h"
 #include "plugin/cli/run_lib.h"
 
 namespace roofsweep::cli {
 namespace {
 
-unsigned CheckedSeed(const ArgParser& p, int seed) {
-  if (seed < 0) throw UsageError("-seed must be 0 or more", p.Synopsis());
-  return static_cast<unsigned>(seed);
-}
-
 // Options shared by `run` and `sweep`, with the papers' defaults.
-void AddProcessingOptions(ArgParser& p, RunRequest& r, bool* init_best_out, bool* no_junctions,
-                          bool* no_junction_ranking, int* seed) {
-  bool& init_best = *init_best_out;
-  p.Option("-min_length", &r.match.min_length, "PX", "shortest segment matched (default 15)")
-      .Option("-seed", seed, "N",
-              "seed of matching's random draws: the segments that calibrate the chromatic "
-              "thresholds, the subsets of the robust colour estimates (default 1; another seed "
-              "shows how much the result depends on them)")
-      .Flag("-no_junctions", no_junctions,
-            "do not complete lines along the epipolar lines from the 3D lines at their ends")
-      .Flag("-no_junction_ranking", no_junction_ranking,
-            "rank rival matches of equal support by correlation alone, not first by how many of "
-            "their ends meet other 3D lines")
-      .Flag("-chromatic_init_best", &init_best,
-            "chromatic thresholds from the best-correlating candidates (keeps more true pairs, ~2x "
-            "slower)")
-      .Option("-chromatic_factor", &r.match.threshold_factor, "F",
-              "chromatic thresholds = F x median statistic (default 8)")
-      .Option("-min_epipolar_angle", &r.match.min_epipolar_angle, "DEG",
-              "a segment meeting a pair's epipolar lines at less than DEG is matched in other "
-              "pairs only (default 20; the paper: 40)")
-      .Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
+void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
+  flags->Add(p, &r.match);
+  p.Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
       .Option("-theta_max", &r.sweep.theta_max_deg, "DEG", "swept angle range end (default 75)")
       .Option("-min_similarity", &r.sweep.min_similarity, "S",
               "accept a half-plane when Sim >= S (default 0.4)")
@@ -94,18 +71,14 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "intersection with a neighbouring plane (default 2, as in the paper)")
       .Flag("-sweep_planes_only", &sweep_only,
             "planes from the sweep only, not also from pairs of coplanar lines");
-  bool init_best = false, no_junctions = false, no_junction_ranking = false;
-  int seed = static_cast<int>(r.match.seed);
-  AddProcessingOptions(p, r, &init_best, &no_junctions, &no_junction_ranking, &seed);
+  MatchFlags flags;
+  AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite")
       .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg");
   if (!p.Parse(args)) return 0;
   r.line_planes = !sweep_only;
-  r.match.init_from_best_correlation = init_best;
-  r.match.junction_completion = !no_junctions;
-  r.match.junction_ranking = !no_junction_ranking;
-  r.match.seed = CheckedSeed(p, seed);
+  flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);
@@ -129,15 +102,11 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
       .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
       .Option("-report", &r.report, "FILE", "JSON report with the stage table");
-  bool init_best = false, no_junctions = false, no_junction_ranking = false;
-  int seed = static_cast<int>(r.match.seed);
-  AddProcessingOptions(p, r, &init_best, &no_junctions, &no_junction_ranking, &seed);
+  MatchFlags flags;
+  AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep sweep out/block -o half_planes.gpkg");
   if (!p.Parse(args)) return 0;
-  r.match.init_from_best_correlation = init_best;
-  r.match.junction_completion = !no_junctions;
-  r.match.junction_ranking = !no_junction_ranking;
-  r.match.seed = CheckedSeed(p, seed);
+  flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);
