@@ -79,6 +79,25 @@ struct EdgeOptions {
   // smoothing plus a pixel), close enough to stay on the face it bounds.
   double side_distance = 2.5;
 
+  // Texture: tile courses, brick rows and paving give rows of parallel
+  // edges of one polarity a few pixels apart. Their segments are not scene
+  // edges, and in matching they are the rivals at the wrong depth and the
+  // contours that stop the flanking regions a row away
+  // (MatchOptions::match_texture). A segment is marked
+  // (Segment2D::texture) when a parallel segment of the same polarity lies on each side
+  // at offsets in [texture_min_offset, texture_max_offset] px that differ
+  // by at most texture_spacing_ratio (a period), each overlapping it along
+  // texture_min_overlap of the shorter one, and it is not
+  // texture_dominance times as strong as one of them. Same polarity keeps
+  // both edges of a painted stripe and an eave beside its cast shadow.
+  bool mark_texture = true;
+  double texture_max_angle = 5.0;
+  double texture_min_offset = 2.0;
+  double texture_max_offset = 16.0;  // a period of 0.8 m at 5 cm GSD
+  double texture_spacing_ratio = 2.0;
+  double texture_min_overlap = 0.5;
+  double texture_dominance = 1.5;
+
   // Optional fusion (§2.3): segments from these methods that are not
   // already present in the result of `method` are added. Empty: off.
   std::vector<GradientMethod> fuse_methods;

@@ -11,6 +11,7 @@
 #include "algorithms/edges/line_pieces.h"
 #include "algorithms/edges/segment_attributes.h"
 #include "algorithms/edges/segment_fusion.h"
+#include "algorithms/edges/texture_filter.h"
 #include "algorithms/edges/thresholds.h"
 
 namespace roofsweep {
@@ -50,6 +51,14 @@ void ValidateOptions(const EdgeOptions& o) {
   Require(finite(o.fuse_max_distance) && finite(o.fuse_max_angle) && finite(o.fuse_min_overlap) &&
               o.fuse_min_overlap >= 0 && o.fuse_min_overlap <= 1,
           "fuse_* must be finite, fuse_min_overlap in [0, 1]");
+  Require(finite(o.texture_max_angle) && o.texture_max_angle >= 0 && o.texture_max_angle < 90 &&
+              finite(o.texture_min_offset) && o.texture_min_offset >= 0 &&
+              finite(o.texture_max_offset) && o.texture_max_offset >= o.texture_min_offset &&
+              finite(o.texture_spacing_ratio) && o.texture_spacing_ratio >= 1 &&
+              finite(o.texture_min_overlap) && o.texture_min_overlap >= 0 &&
+              o.texture_min_overlap <= 1 && finite(o.texture_dominance) && o.texture_dominance > 0,
+          "texture_* must be finite: max_angle in [0, 90), 0 <= min_offset <= max_offset, "
+          "spacing_ratio >= 1, min_overlap in [0, 1], dominance > 0");
 }
 
 void ValidateImage(const cv::Mat& image) {
@@ -126,6 +135,10 @@ Segments2D ExtractSegments(const cv::Mat& image, const EdgeOptions& options, Edg
     if (input.channels() == 1 || extra == options.method) continue;
     AddMissingSegments(segments, ExtractWithMethod(input, extra, options, nullptr),
                        options.fuse_max_distance, options.fuse_max_angle, options.fuse_min_overlap);
+  }
+  if (options.mark_texture) {
+    const std::vector<bool> texture = MarkRepetitiveTexture(segments, options);
+    for (size_t i = 0; i < segments.size(); ++i) segments[i].texture = texture[i];
   }
   std::sort(segments.begin(), segments.end(), LongerFirst);
   return segments;

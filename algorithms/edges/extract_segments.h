@@ -20,7 +20,8 @@ struct EdgeStats {
 // smoothing, fused colour gradient, non-maximum suppression with
 // sub-pixel positions, hysteresis, linking, splitting into straight pieces,
 // merging across small gaps, the minimum length, side colours, and the
-// optional fusion with other gradient methods (§2.3). Segments come out
+// optional fusion with other gradient methods (§2.3), and the mark of the
+// segments of periodic texture (EdgeOptions::mark_texture). Segments come out
 // sorted by decreasing length (ties by position), deterministically.
 //
 // `image`: CV_32FC3 (R, G, B) or CV_32FC1 in [0, 1], as io's ReadImage

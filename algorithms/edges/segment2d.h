@@ -36,6 +36,10 @@ struct Segment2D {
   // from the segment.
   Eigen::Vector3f colour_left = Eigen::Vector3f::Zero();
   Eigen::Vector3f colour_right = Eigen::Vector3f::Zero();
+  // Inside a periodic pattern of parallel edges (tile courses, brick rows;
+  // EdgeOptions::mark_texture): a real image edge, but no edge of the
+  // scene's geometry, and ambiguous to match.
+  bool texture = false;
 
   double Length() const { return (p1 - p0).norm(); }
   Eigen::Vector2d Direction() const { return (p1 - p0).normalized(); }

@@ -1,6 +1,7 @@
 // rs_edges_sim_eval: measures the 2D segment detectors against the
 // simulator's ground truth (issue 4). Simulates the `realistic` preset for
 // a few seeds, runs ExtractSegments with the max, Di Zenzo and grey methods
+// (and max without the segments marked as texture, as matching takes them)
 // and OpenCV's LSD on every view, scores them with EvaluateSegments2D
 // (visibility from the renderer's depth map) and prints one table.
 //
@@ -118,7 +119,7 @@ int Main(int argc, char** argv) {
       return 2;
     }
   }
-  const std::vector<std::string> methods = {"max", "dizenzo", "grey", "lsd"};
+  const std::vector<std::string> methods = {"max", "max-tex", "dizenzo", "grey", "lsd"};
   std::map<std::string, Totals> totals;
   std::set<EdgeKind> seen_kinds;
   double isoluminant_buildings = 0, buildings = 0;
@@ -172,10 +173,15 @@ int Main(int argc, char** argv) {
           segments = Lsd(r.images[v], 15.0);
         } else {
           EdgeOptions eo;
-          eo.method = m == "max"       ? GradientMethod::kMax
-                      : m == "dizenzo" ? GradientMethod::kDiZenzo
-                                       : GradientMethod::kGrey;
+          eo.method = m == "max" || m == "max-tex" ? GradientMethod::kMax
+                      : m == "dizenzo"             ? GradientMethod::kDiZenzo
+                                                   : GradientMethod::kGrey;
           segments = ExtractSegments(image, eo);
+          // What matching takes (MatchOptions::match_texture).
+          if (m == "max-tex")
+            segments.erase(std::remove_if(segments.begin(), segments.end(),
+                                          [](const Segment2D& g) { return g.texture; }),
+                           segments.end());
         }
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1)

@@ -93,8 +93,14 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   auto t0 = std::chrono::steady_clock::now();
   ReportOrCancel(progress, 0.0, "edges");
   res.segments.resize(nv);
-  tbb::parallel_for(0, nv,
-                    [&](int v) { res.segments[v] = ExtractSegments(images[v], edge_options); });
+  tbb::parallel_for(0, nv, [&](int v) {
+    res.segments[v] = ExtractSegments(images[v], edge_options);
+    if (!o.match_texture) {
+      Segments2D& s = res.segments[v];
+      s.erase(std::remove_if(s.begin(), s.end(), [](const Segment2D& g) { return g.texture; }),
+              s.end());
+    }
+  });
   res.timings.edges_s = Seconds(t0);
   for (const auto& s : res.segments) res.funnel.segments += static_cast<long long>(s.size());
 

@@ -68,7 +68,7 @@ struct MatchTimings {
 };
 
 struct MatchResult {
-  std::vector<Segments2D> segments;  // per view, as detected
+  std::vector<Segments2D> segments;  // per view, as matched (MatchOptions::match_texture)
   std::vector<Line3D> lines;
   MatchFunnel funnel;
   MatchTimings timings;

@@ -80,6 +80,7 @@ LayerFeature ToFeature(const Segment2D& s) {
   f.reals["contrast"] = s.contrast;
   f.reals["rms_residual_px"] = s.rms_residual;
   f.integers["support"] = s.support;
+  f.integers["texture"] = s.texture;
   f.strings["band"] = BandName(s.band);
   f.strings["method"] = MethodName(s.method);
   f.strings["colour_left"] = Hex(s.colour_left);
@@ -88,7 +89,7 @@ LayerFeature ToFeature(const Segment2D& s) {
 }
 
 // The image as 8-bit RGB with the segments drawn in yellow (rarely a roof
-// or ground colour), 1 px anti-aliased.
+// or ground colour), those marked as texture in cyan, 1 px anti-aliased.
 cv::Mat Overlay(const cv::Mat& image, const Segments2D& segments) {
   cv::Mat rgb;
   if (image.channels() == 1)
@@ -103,8 +104,10 @@ cv::Mat Overlay(const cv::Mat& image, const Segments2D& segments) {
     return cv::Point(static_cast<int>(std::lround((p.x() - 0.5) * (1 << kShift))),
                      static_cast<int>(std::lround((p.y() - 0.5) * (1 << kShift))));
   };
-  for (const Segment2D& s : segments)
-    cv::line(out, pt(s.p0), pt(s.p1), cv::Scalar(255, 255, 0), 1, cv::LINE_AA, kShift);
+  for (const Segment2D& s : segments) {
+    const cv::Scalar colour = s.texture ? cv::Scalar(0, 255, 255) : cv::Scalar(255, 255, 0);
+    cv::line(out, pt(s.p0), pt(s.p1), colour, 1, cv::LINE_AA, kShift);
+  }
   return out;
 }
 

@@ -10,6 +10,9 @@ void MatchFlags::Add(ArgParser& p, MatchOptions* o) {
               "seed of matching's random draws: the segments that calibrate the chromatic "
               "thresholds, the subsets of the robust colour estimates (default 1; another seed "
               "shows how much the result depends on them)")
+      .Flag("-match_texture", &match_texture_,
+            "also match the segments marked as periodic texture (tile courses, brick rows: "
+            "parallel edges of one polarity at a regular spacing on both sides)")
       .Flag("-no_junctions", &no_junctions_,
             "do not complete lines along the epipolar lines from the 3D lines at their ends")
       .Flag("-no_junction_ranking", &no_junction_ranking_,
@@ -31,6 +34,7 @@ void MatchFlags::Apply(const ArgParser& p) const {
   options_->init_from_best_correlation = init_best_;
   options_->junction_completion = !no_junctions_;
   options_->junction_ranking = !no_junction_ranking_;
+  options_->match_texture = match_texture_;
 }
 
 }  // namespace roofsweep::cli

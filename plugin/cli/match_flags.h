@@ -16,7 +16,8 @@ class MatchFlags {
 
  private:
   MatchOptions* options_ = nullptr;
-  bool init_best_ = false, no_junctions_ = false, no_junction_ranking_ = false;
+  bool init_best_ = false, no_junctions_ = false, no_junction_ranking_ = false,
+       match_texture_ = false;
   int seed_ = 0;
 };
 

@@ -44,7 +44,8 @@ test_lines_writes_one_layer_per_image() {
     fail lines_pixel_extent "$(ogrinfo -so -ro "$WORK/lines.gpkg" lines_s01_i001 | grep -E 'Geometry|Extent')"
   fi
   if ogrinfo -ro "$WORK/lines.gpkg" lines_s01_i001 -fid 1 | grep -q 'length_px (Real)' &&
-    ogrinfo -ro "$WORK/lines.gpkg" lines_s01_i001 -fid 1 | grep -q 'colour_left (String) = #'; then
+    ogrinfo -ro "$WORK/lines.gpkg" lines_s01_i001 -fid 1 | grep -q 'colour_left (String) = #' &&
+    ogrinfo -ro "$WORK/lines.gpkg" lines_s01_i001 -fid 1 | grep -Eq 'texture \(Integer(64)?\) = [01]$'; then
     pass lines_attributes
   else
     fail lines_attributes "fields missing"
