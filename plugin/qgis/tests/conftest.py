@@ -13,6 +13,9 @@ for p in (PLUGIN_PARENT, "/usr/share/qgis/python/plugins"):
         sys.path.insert(0, p)
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+# QGIS computes statistics of the raster layers it opens (the NGI DEM) and
+# would store them beside the file as .aux.xml, inside the shared data.
+os.environ["GDAL_PAM_ENABLED"] = "NO"
 
 from qgis.core import QgsProcessingFeedback  # noqa: E402
 from qgis.testing import start_app  # noqa: E402
