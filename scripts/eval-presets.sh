@@ -3,9 +3,13 @@
 # seeds 1 and 2, hard, a Berlin LoD2 tile), runs `roofsweep run` on each,
 # once from matched lines and once from the simulator's true edges (the
 # upper bound of the later stages), and prints one table from `eval -json`.
-#   scripts/eval-presets.sh [BUILD] [OUTDIR] [CASE ...]
-# Blocks already simulated in OUTDIR are reused. Not part of `make test`
-# (about 15 minutes on two cores).
+#   [MATCH_SEEDS="1 2 3"] scripts/eval-presets.sh [BUILD] [OUTDIR] [CASE ...]
+# MATCH_SEEDS (default 1) runs the matched lines once per matching seed
+# (`-seed`, rows matched1, matched2, ...) and ends with the mean and spread
+# of the plane quality over them: one seed cannot show a change of a few
+# points (sweep README, "How much the figures move"). Blocks already
+# simulated in OUTDIR are reused. Not part of `make test` (about 15
+# minutes on two cores, plus 5 per extra seed).
 set -euo pipefail
 BUILD=${1:-build}
 OUT=${2:-out/eval}
@@ -13,6 +17,7 @@ shift $(( $# > 2 ? 2 : $# ))
 RS="$BUILD/plugin/cli/roofsweep"
 SHARED=${ROOFSWEEP_SHARED_DIR:-$(cd "$(dirname "$0")/../.." && pwd)/shared}
 CASES=("$@")
+read -r -a SEEDS <<<"${MATCH_SEEDS:-1}"
 [[ ${#CASES[@]} -gt 0 ]] || CASES=(easy-1 realistic-1 realistic-2 hard-1 berlin-1)
 mkdir -p "$OUT"
 
@@ -44,16 +49,36 @@ PY
 
 echo "| block       | lines   | plane compl % | corr % | quality % | normal median deg | vertex RMS GSD | RMSZ m | bldg compl % | bldg corr % | run s |"
 echo "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+runs=()
 for c in "${CASES[@]}"; do
   simulate "$c"
-  for source in matched truth; do
+  for source in "${SEEDS[@]/#/matched}" truth; do
     extra=()
-    [[ $source == truth ]] && extra=(-lines "$OUT/$c/groundtruth_edges.json")
+    label=$source
+    if [[ $source == truth ]]; then
+      extra=(-lines "$OUT/$c/groundtruth_edges.json")
+    else
+      extra=(-seed "${source#matched}")
+      [[ ${#SEEDS[@]} -gt 1 ]] || label=matched
+    fi
     t0=$(date +%s.%N)
-    "$RS" run "$OUT/$c" "${extra[@]}" -o "$OUT/$c-$source.gml" -report "$OUT/$c-$source.json" \
+    "$RS" run "$OUT/$c" "${extra[@]}" -o "$OUT/$c-$label.gml" -report "$OUT/$c-$label.json" \
       -overwrite -q
     t=$(python3 -c "import sys; print('%.1f' % (float(sys.argv[2]) - float(sys.argv[1])))" "$t0" "$(date +%s.%N)")
-    "$RS" eval "$OUT/$c-$source.gml" "$OUT/$c" -json >"$OUT/$c-$source-eval.json" 2>/dev/null
-    row "$c" "$source" "$t" "$OUT/$c-$source-eval.json"
+    "$RS" eval "$OUT/$c-$label.gml" "$OUT/$c" -json >"$OUT/$c-$label-eval.json" 2>/dev/null
+    row "$c" "$label" "$t" "$OUT/$c-$label-eval.json"
+    [[ $source == truth ]] || runs+=("$c" "$OUT/$c-$label-eval.json")
   done
 done
+[[ ${#SEEDS[@]} -gt 1 ]] || exit 0
+python3 - "${runs[@]}" <<'PY'
+import json, statistics, sys
+by = {}
+args = sys.argv[1:]
+for name, path in zip(args[::2], args[1::2]):
+    by.setdefault(name, []).append(100 * json.load(open(path))["roof_planes"]["quality"])
+print("\nplane quality from matched lines over the matching seeds: mean, SD, min-max")
+for name, q in by.items():
+    print("  %-11s %5.1f  %4.1f  %5.1f-%5.1f  (%d seeds)" % (
+        name, statistics.mean(q), statistics.pstdev(q), min(q), max(q), len(q)))
+PY
