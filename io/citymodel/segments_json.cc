@@ -4,10 +4,12 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "algorithms/core/error.h"
 #include "io/citymodel/output_file.h"
@@ -88,14 +90,32 @@ bool LooksLikeJson(const std::string& path) {
   return c == '{';
 }
 
+// "name:id name:id ..." as `roofsweep match` writes it; empty when any token
+// does not parse (an image name with a space cannot be told apart).
+std::vector<std::pair<std::string, int>> ParseObservations(const std::string& text) {
+  std::vector<std::pair<std::string, int>> out;
+  std::istringstream in(text);
+  std::string token;
+  while (in >> token) {
+    const size_t colon = token.rfind(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == token.size()) return {};
+    char* end = nullptr;
+    const long id = std::strtol(token.c_str() + colon + 1, &end, 10);
+    if (*end != '\0' || id < 0) return {};
+    out.emplace_back(token.substr(0, colon), static_cast<int>(id));
+  }
+  return out;
+}
+
 void AddLineString(const OGRLineString& ls, const std::string& kind, double rms_px,
-                   SegmentSet* set) {
+                   const std::vector<std::pair<std::string, int>>& observations, SegmentSet* set) {
   for (int i = 0; i + 1 < ls.getNumPoints(); ++i) {
     LabelledSegment s;
     s.segment.a = {ls.getX(i), ls.getY(i), ls.getZ(i)};
     s.segment.b = {ls.getX(i + 1), ls.getY(i + 1), ls.getZ(i + 1)};
     s.kind = kind;
     s.rms_px = rms_px;
+    s.observations = observations;
     set->segments.push_back(s);
   }
 }
@@ -132,6 +152,7 @@ SegmentSet ReadSegments(const std::string& path, const std::string& layer_name) 
   const int rms_field = layer->GetLayerDefn()->GetFieldIndex("rms_px");
   const int depth_field = layer->GetLayerDefn()->GetFieldIndex("depth_from");
   const int views_field = layer->GetLayerDefn()->GetFieldIndex("views");
+  const int observations_field = layer->GetLayerDefn()->GetFieldIndex("observations");
   layer->ResetReading();
   for (auto& feature : *layer) {
     const OGRGeometry* g = feature->GetGeometryRef();
@@ -144,12 +165,16 @@ SegmentSet ReadSegments(const std::string& path, const std::string& layer_name) 
     const double rms_px = stereo && rms_field >= 0 && feature->IsFieldSetAndNotNull(rms_field)
                               ? feature->GetFieldAsDouble(rms_field)
                               : std::numeric_limits<double>::quiet_NaN();
+    const auto observations =
+        observations_field >= 0 && feature->IsFieldSetAndNotNull(observations_field)
+            ? ParseObservations(feature->GetFieldAsString(observations_field))
+            : std::vector<std::pair<std::string, int>>();
     const auto t = wkbFlatten(g->getGeometryType());
     if (t == wkbLineString) {
-      AddLineString(*g->toLineString(), kind, rms_px, &set);
+      AddLineString(*g->toLineString(), kind, rms_px, observations, &set);
     } else if (t == wkbMultiLineString) {
       for (const OGRLineString* part : *g->toMultiLineString())
-        AddLineString(*part, kind, rms_px, &set);
+        AddLineString(*part, kind, rms_px, observations, &set);
     }
   }
   return set;

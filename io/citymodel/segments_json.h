@@ -2,6 +2,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/geometry/segment3.h"
@@ -21,6 +22,11 @@ struct LabelledSegment {
   // (fields views) or completed from its junctions (depth_from other than
   // "stereo") reprojects exactly by construction.
   double rms_px = std::numeric_limits<double>::quiet_NaN();
+  // Where a matched line was observed: (image name, segment id) from the
+  // field observations ("name:id name:id ...") of the lines3d layer
+  // `roofsweep match` writes; empty when the source has none or a token
+  // does not parse.
+  std::vector<std::pair<std::string, int>> observations;
 };
 
 struct SegmentSet {

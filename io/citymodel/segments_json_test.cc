@@ -31,6 +31,8 @@ TEST(ReadSegments, TheResidualOfAWrittenLineComesBack) {
   // Two views: a line through two planes fits them exactly.
   lines.push_back(lines[1]);
   lines[3].integers["views"] = 2;
+  lines[0].strings["observations"] = "s01_i001:7 s02_i002:31";
+  lines[1].strings["observations"] = "name with space:3";  // cannot be told apart
   FeatureLayerOptions o;
   o.crs = "EPSG:25832";
   WriteFeatureLayer(path, "lines3d", LayerGeometry::kLineStringZ, lines, o);
@@ -41,6 +43,9 @@ TEST(ReadSegments, TheResidualOfAWrittenLineComesBack) {
   EXPECT_DOUBLE_EQ(set.segments[1].segment.b.z(), 102);
   EXPECT_TRUE(std::isnan(set.segments[2].rms_px));
   EXPECT_TRUE(std::isnan(set.segments[3].rms_px));
+  using Obs = std::vector<std::pair<std::string, int>>;
+  EXPECT_EQ(set.segments[0].observations, (Obs{{"s01_i001", 7}, {"s02_i002", 31}}));
+  EXPECT_TRUE(set.segments[1].observations.empty());
   // The layer's CRS is stored promoted to 3D, without a top-level code; it
   // must still read back as the block's, or run -lines cannot tell a file in
   // another CRS from its own.

@@ -249,10 +249,24 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       out.messages.push_back(r.lines_in + ": lines reprojected from " + from + " to the block's " +
                              manifest.crs);
     }
+    // The views a line was matched in restrict the sweep's reference view
+    // (SweepLine::views), as when `run` matches itself; names this block
+    // does not have (lines of another block) drop the restriction.
+    std::map<std::string, int> view_index;
+    for (size_t v = 0; v < block.views.size(); ++v)
+      view_index[block.views[v].name] = static_cast<int>(v);
     for (const LabelledSegment& s : given.segments) {
       Line3D l;
       l.segment = {frame.ToLocal(s.segment.a), frame.ToLocal(s.segment.b)};
       l.rms_px = s.rms_px;
+      for (const auto& [name, id] : s.observations) {
+        const auto it = view_index.find(name);
+        if (it == view_index.end()) {
+          l.observations.clear();
+          break;
+        }
+        l.observations.emplace_back(it->second, id);
+      }
       matched.lines.push_back(std::move(l));
     }
     out.stages.push_back(
