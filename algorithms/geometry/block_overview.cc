@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 
 namespace roofsweep {
@@ -68,8 +69,37 @@ std::optional<Eigen::Vector3d> Intersect(const Ray& r, const Eigen::Vector4d& pl
 
 }  // namespace
 
+std::optional<std::string> SurfaceModelWarning(const GroundModel& ground, double min_step_m,
+                                               double min_share) {
+  if (!ground.grid) return std::nullopt;
+  const GroundModel::Grid& g = *ground.grid;
+  const double step = std::max(min_step_m, std::tan(60.0 / kRadToDeg) * std::min(g.dx, g.dy));
+  long long pairs = 0, steps = 0;
+  auto pair = [&](float a, float b) {
+    if (!std::isfinite(a) || !std::isfinite(b)) return;
+    ++pairs;
+    steps += std::abs(a - b) > step;
+  };
+  for (int r = 0; r < g.rows; ++r) {
+    const float* row = g.z.data() + static_cast<size_t>(r) * g.cols;
+    for (int c = 0; c < g.cols; ++c) {
+      if (c + 1 < g.cols) pair(row[c], row[c + 1]);
+      if (r + 1 < g.rows) pair(row[c], row[c + g.cols]);
+    }
+  }
+  if (pairs == 0 || steps <= min_share * static_cast<double>(pairs)) return std::nullopt;
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "the DTM looks like a surface model: %.1f %% of neighbouring cells differ by more "
+                "than %.1f m (walls, trees); roof lines would count as ground lines and walls "
+                "would end at roof level: give a bare-earth DTM or a ground height",
+                100.0 * static_cast<double>(steps) / static_cast<double>(pairs), step);
+  return std::string(buf);
+}
+
 BlockOverview AnalyzeBlock(const Block& block, const BlockOverviewOptions& options) {
   BlockOverview out;
+  if (const auto w = SurfaceModelWarning(block.ground)) out.warnings.push_back(*w);
   if (block.views.empty()) return out;
 
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();

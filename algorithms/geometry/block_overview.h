@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,7 @@ struct BlockOverview {
   bool plane_is_ground = false;
   std::vector<ViewFootprint> footprints;  // one per view
   std::vector<ViewOverlap> overlaps;      // pairs with fraction > min_overlap
-  std::vector<std::string> warnings;      // one line each, naming the image
+  std::vector<std::string> warnings;      // one line each, naming the image or the DTM
 };
 
 struct BlockOverviewOptions {
@@ -46,5 +47,15 @@ struct BlockOverviewOptions {
 };
 
 BlockOverview AnalyzeBlock(const Block& block, const BlockOverviewOptions& options = {});
+
+// A surface model (DSM) given as the ground: walls and tree crowns make
+// height steps between neighbouring cells that bare terrain does not have,
+// and with it roof lines count as lines on the ground and walls end at
+// roof level. A one-line warning when more than `min_share` of the pairs
+// of neighbouring grid cells differ by more than max(min_step_m, the step
+// of a 60 degree slope over one cell); nullopt otherwise or without a
+// grid. (ODM's dsm.tif of `orthority-odm-drone`: see the test.)
+std::optional<std::string> SurfaceModelWarning(const GroundModel& ground, double min_step_m = 2.5,
+                                               double min_share = 0.005);
 
 }  // namespace roofsweep

@@ -85,5 +85,43 @@ TEST(BlockOverview, DivergingAxesWithoutGroundGiveNoGsd) {
   EXPECT_NE(o.warnings[0].find("do not converge"), std::string::npos);
 }
 
+// A 60 x 60 grid of `spacing` m cells on a plane rising `slope_deg` along x,
+// with a 10 m high box of 12 x 12 cells on it when `building`.
+GroundModel SlopeGrid(double spacing, double slope_deg, bool building) {
+  GroundModel g;
+  GroundModel::Grid grid;
+  grid.dx = grid.dy = spacing;
+  grid.rows = grid.cols = 60;
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) {
+      const bool roof = building && r >= 20 && r < 32 && c >= 20 && c < 32;
+      grid.z.push_back(static_cast<float>(c * spacing * std::tan(slope_deg * M_PI / 180.0) +
+                                          (roof ? 10.0 : 0.0)));
+    }
+  g.grid = grid;
+  return g;
+}
+
+TEST(BlockOverview, WarnsWhenTheDtmIsASurfaceModel) {
+  // Walls: 48 of 7080 neighbouring pairs step by 10 m (0.7 %).
+  const auto w = SurfaceModelWarning(SlopeGrid(0.5, 5, true));
+  ASSERT_TRUE(w.has_value());
+  EXPECT_NE(w->find("surface model"), std::string::npos);
+  Block block = NadirStrip(2, 200);
+  block.ground = SlopeGrid(0.5, 5, true);
+  int dsm_warnings = 0;
+  for (const std::string& line : AnalyzeBlock(block).warnings)
+    dsm_warnings += line.find("surface model") != std::string::npos;
+  EXPECT_EQ(dsm_warnings, 1);
+  // Bare terrain, even steep: a 50 degree slope over 0.5 m cells, a 45
+  // degree one over 24 m cells (steps of 24 m, under the 60 degree bound).
+  EXPECT_FALSE(SurfaceModelWarning(SlopeGrid(0.5, 50, false)).has_value());
+  EXPECT_FALSE(SurfaceModelWarning(SlopeGrid(24, 45, false)).has_value());
+  // A constant ground height has no grid to judge.
+  GroundModel flat;
+  flat.height = 0;
+  EXPECT_FALSE(SurfaceModelWarning(flat).has_value());
+}
+
 }  // namespace
 }  // namespace roofsweep

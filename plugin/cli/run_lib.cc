@@ -200,6 +200,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   const LocalFrame frame = ManifestLocalFrame(manifest);
   if (!block.ground.Known() && !r.stop_after_sweep)
     throw Error(r.block + ": the block has no ground height or DTM; walls need one");
+  if (const auto w = SurfaceModelWarning(block.ground))
+    out.messages.push_back(manifest.dtm + ": " + *w);
   // Footprints are read first: a wrong file or CRS should fail in seconds,
   // not after the matching.
   std::vector<Footprint> footprints;
