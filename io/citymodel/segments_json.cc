@@ -19,6 +19,28 @@ namespace roofsweep {
 
 using nlohmann::json;
 
+std::string FormatObservations(const std::vector<std::pair<std::string, int>>& observations) {
+  std::string out;
+  for (const auto& [name, id] : observations)
+    out += (out.empty() ? "" : " ") + name + ":" + std::to_string(id);
+  return out;
+}
+
+std::vector<std::pair<std::string, int>> ParseObservations(const std::string& text) {
+  std::vector<std::pair<std::string, int>> out;
+  std::istringstream in(text);
+  std::string token;
+  while (in >> token) {
+    const size_t colon = token.rfind(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == token.size()) return {};
+    char* end = nullptr;
+    const long id = std::strtol(token.c_str() + colon + 1, &end, 10);
+    if (*end != '\0' || id < 0) return {};
+    out.emplace_back(token.substr(0, colon), static_cast<int>(id));
+  }
+  return out;
+}
+
 void WriteSegmentsJson(const SegmentSet& set, const std::string& path, bool overwrite) {
   json j;
   j["type"] = "roofsweep_segments";
@@ -88,23 +110,6 @@ bool LooksLikeJson(const std::string& path) {
   while (f.get(c) && std::isspace(static_cast<unsigned char>(c))) {
   }
   return c == '{';
-}
-
-// "name:id name:id ..." as `roofsweep match` writes it; empty when any token
-// does not parse (an image name with a space cannot be told apart).
-std::vector<std::pair<std::string, int>> ParseObservations(const std::string& text) {
-  std::vector<std::pair<std::string, int>> out;
-  std::istringstream in(text);
-  std::string token;
-  while (in >> token) {
-    const size_t colon = token.rfind(':');
-    if (colon == std::string::npos || colon == 0 || colon + 1 == token.size()) return {};
-    char* end = nullptr;
-    const long id = std::strtol(token.c_str() + colon + 1, &end, 10);
-    if (*end != '\0' || id < 0) return {};
-    out.emplace_back(token.substr(0, colon), static_cast<int>(id));
-  }
-  return out;
 }
 
 void AddLineString(const OGRLineString& ls, const std::string& kind, double rms_px,

@@ -29,6 +29,12 @@ struct LabelledSegment {
   std::vector<std::pair<std::string, int>> observations;
 };
 
+// The field observations of the lines3d layer: "name:id name:id ...",
+// image name and segment id. Parse gives empty when any token does not
+// parse (an image name with a space cannot be told apart).
+std::string FormatObservations(const std::vector<std::pair<std::string, int>>& observations);
+std::vector<std::pair<std::string, int>> ParseObservations(const std::string& text);
+
 struct SegmentSet {
   std::string crs;  // empty: local frame
   std::vector<LabelledSegment> segments;

@@ -46,6 +46,7 @@ TEST(ReadSegments, TheResidualOfAWrittenLineComesBack) {
   using Obs = std::vector<std::pair<std::string, int>>;
   EXPECT_EQ(set.segments[0].observations, (Obs{{"s01_i001", 7}, {"s02_i002", 31}}));
   EXPECT_TRUE(set.segments[1].observations.empty());
+  EXPECT_EQ(FormatObservations(set.segments[0].observations), "s01_i001:7 s02_i002:31");
   // The layer's CRS is stored promoted to 3D, without a top-level code; it
   // must still read back as the block's, or run -lines cannot tell a file in
   // another CRS from its own.

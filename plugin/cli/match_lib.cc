@@ -141,10 +141,9 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
     f.strings["depth_from"] = DepthFrom(l);
     f.strings["colour_left"] = Hex(l.colour_left);
     f.strings["colour_right"] = Hex(l.colour_right);
-    std::string obs;
-    for (const auto& [v, s] : l.observations)
-      obs += (obs.empty() ? "" : " ") + block.views[v].name + ":" + std::to_string(s);
-    f.strings["observations"] = obs;
+    std::vector<std::pair<std::string, int>> observations;
+    for (const auto& [v, s] : l.observations) observations.emplace_back(block.views[v].name, s);
+    f.strings["observations"] = FormatObservations(observations);
     features.push_back(std::move(f));
   }
   lo.crs = !r.target_crs.empty()   ? r.target_crs
