@@ -85,23 +85,29 @@ namespace {
 // (a fixed summation order: the result does not depend on how the subset
 // was found).
 MeanCov EstimateMarked(const std::vector<Eigen::Vector2d>& pts, const std::vector<char>& take) {
-  MeanCov r{Eigen::Vector2d::Zero(), Eigen::Matrix2d::Zero()};
-  int m = 0;
+  // Weights of 0 or 1 instead of a branch: about half the points are
+  // marked, in no pattern a branch predictor could learn, and adding an
+  // exact zero leaves every sum as it was.
   const int n = static_cast<int>(pts.size());
-  for (int i = 0; i < n; ++i)
-    if (take[i]) {
-      r.mean += pts[i];
-      ++m;
-    }
+  double mx = 0, my = 0;
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const double w = take[i];
+    mx += w * pts[i].x();
+    my += w * pts[i].y();
+    m += take[i];
+  }
+  MeanCov r{Eigen::Vector2d::Zero(), Eigen::Matrix2d::Zero()};
+  r.mean << mx, my;
   r.mean /= static_cast<double>(m);
   double sxx = 0, sxy = 0, syy = 0;
-  for (int i = 0; i < n; ++i)
-    if (take[i]) {
-      const double dx = pts[i].x() - r.mean.x(), dy = pts[i].y() - r.mean.y();
-      sxx += dx * dx;
-      sxy += dx * dy;
-      syy += dy * dy;
-    }
+  for (int i = 0; i < n; ++i) {
+    const double w = take[i];
+    const double dx = pts[i].x() - r.mean.x(), dy = pts[i].y() - r.mean.y();
+    sxx += w * (dx * dx);
+    sxy += w * (dx * dy);
+    syy += w * (dy * dy);
+  }
   const double f = 1.0 / std::max(1.0, static_cast<double>(m) - 1.0);
   r.cov << sxx * f, sxy * f, sxy * f, syy * f;
   return r;

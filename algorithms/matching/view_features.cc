@@ -1,5 +1,6 @@
 #include "algorithms/matching/view_features.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Dense>
@@ -48,7 +49,9 @@ std::vector<Eigen::Vector2d> FlankingRegion(const cv::Mat& labels, const Segment
     for (int i = 0; i < cols; ++i) {
       bool ok = j == 0 || ((i == 0 || prev[i - 1]) && prev[i] && (i + 1 >= cols || prev[i + 1]));
       // Stop one cell before a neighbouring contour (the offset again).
-      ok = ok && !contour(i, j) && !contour(i, j + 1);
+      // Beyond the first row, prev[i] already says cell (i, j) is no
+      // contour: it was looked ahead at from row j - 1.
+      ok = ok && (j > 0 || !contour(i, j)) && !contour(i, j + 1);
       cur[i] = ok;
       if (ok) {
         out.push_back(pos(i, j));
@@ -166,15 +169,24 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
   }
   f.index = std::make_unique<SegmentIndex>(f.ideal);
   f.sides.resize(f.segments.size());
-  for (size_t i = 0; i < f.segments.size(); ++i) {
-    if (f.segments[i].Length() < options.min_length) continue;
-    for (int k = 0; k < 2; ++k) {
-      const auto px = FlankingRegion(f.labels, f.segments[i], static_cast<int>(i), k == 0 ? 1 : -1,
-                                     options.region_offset, options.region_width);
-      f.sides[i][k] =
-          RegionColour(f.lab, px, options, options.seed * 7919u + static_cast<unsigned>(i * 2 + k));
-    }
-  }
+  // Per segment as well as per view: views differ in their number of
+  // segments by a factor of two, and with fewer cores than views the
+  // largest one ends the stage alone. Each result depends only on its
+  // segment (and seed), so the split does not change it.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, f.segments.size(), 64),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t i = r.begin(); i != r.end(); ++i) {
+                        if (f.segments[i].Length() < options.min_length) continue;
+                        for (int k = 0; k < 2; ++k) {
+                          const auto px = FlankingRegion(
+                              f.labels, f.segments[i], static_cast<int>(i), k == 0 ? 1 : -1,
+                              options.region_offset, options.region_width);
+                          f.sides[i][k] =
+                              RegionColour(f.lab, px, options,
+                                           options.seed * 7919u + static_cast<unsigned>(i * 2 + k));
+                        }
+                      }
+                    });
   return f;
 }
 
