@@ -183,6 +183,46 @@ bool PlanesMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p, const RoofPl
   return std::abs(PlaneZ(p.plane, c) - PlaneZ(q.plane, c)) <= o.max_step_m;
 }
 
+// Length of the chord that the line n . x + k = 0 cuts from a convex ring.
+double ChordLength(const Ring2& ring, const Eigen::Vector2d& n, double k) {
+  std::vector<Eigen::Vector2d> hits;
+  for (size_t a = 0, m = ring.size(); a < m; ++a) {
+    const Eigen::Vector2d& p = ring[a];
+    const Eigen::Vector2d& q = ring[(a + 1) % m];
+    const double sp = n.dot(p) + k, sq = n.dot(q) + k;
+    if ((sp < 0) == (sq < 0) || sp == sq) continue;
+    hits.push_back(p + (q - p) * (sp / (sp - sq)));
+  }
+  double longest = 0;
+  for (size_t a = 0; a < hits.size(); ++a)
+    for (size_t b = a + 1; b < hits.size(); ++b)
+      longest = std::max(longest, (hits[a] - hits[b]).norm());
+  return longest;
+}
+
+double Diameter(const Ring2& ring) {
+  double d = 0;
+  for (size_t a = 0; a < ring.size(); ++a)
+    for (size_t b = a + 1; b < ring.size(); ++b) d = std::max(d, (ring[a] - ring[b]).norm());
+  return d;
+}
+
+// False when the planes cross along a line that runs across the strip where
+// their grown patches overlap rather than along it (see
+// AssemblyOptions::split_across_edges).
+bool CrossAlongMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p,
+                    const RoofPlaneHypothesis& q, const Ring2& grown_q, double min_along) {
+  // z = g . x + h per plane; they cross where (g_p - g_q) . x + h_p - h_q = 0.
+  const Eigen::Vector4d& a = p.plane;
+  const Eigen::Vector4d& b = q.plane;
+  const Eigen::Vector2d n(-a[0] / a[2] + b[0] / b[2], -a[1] / a[2] + b[1] / b[2]);
+  if (n.norm() < 0.1) return true;
+  const Ring2 meet = IntersectConvex(grown_p, grown_q);
+  if (meet.size() < 3) return true;
+  const double chord = ChordLength(meet, n, -a[3] / a[2] + b[3] / b[2]);
+  return chord == 0 || chord >= min_along * Diameter(meet);
+}
+
 // Two supporting lines that form a right-angled corner in plan (see
 // AssemblyOptions::keep_right_corners).
 bool HasRightCorner(const RoofPlaneHypothesis& p, const AssemblyOptions& o) {
@@ -807,7 +847,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       const Eigen::Vector2d ci = Centroid(planes[i].patch), cj = Centroid(planes[j].patch);
       const bool convex =
           PlaneZ(planes[i].plane, ci) <= PlaneZ(planes[j].plane, ci) + o.max_step_m &&
-          PlaneZ(planes[j].plane, cj) <= PlaneZ(planes[i].plane, cj) + o.max_step_m;
+          PlaneZ(planes[j].plane, cj) <= PlaneZ(planes[i].plane, cj) + o.max_step_m &&
+          (!o.split_across_edges || !footprints.empty() ||
+           CrossAlongMeet(planes[i], grown[i], planes[j], grown[j], o.edge_min_along));
       if (convex || !o.split_at_valleys) {
         part_links[i].push_back(j);
         part_links[j].push_back(i);

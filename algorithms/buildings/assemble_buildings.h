@@ -81,6 +81,20 @@ struct AssemblyOptions {
   // common (the parts overlap in plan near the valley); false: one lower
   // envelope per building, which drops the higher wing of an L or T.
   bool split_at_valleys = true;
+  // Two planes of one convex part meet along the line where they cross, so
+  // in plan that line runs along the strip where their grown patches
+  // overlap, as a ridge or hip does. Terraced houses of different roof
+  // types (a gable beside a shed roof rising the same way) meet at a party
+  // wall instead, and their planes cross along a line that runs across
+  // that strip: one envelope over both would lay a strip of each plane
+  // across the whole row. Such planes go into separate convex parts when
+  // the crossing line covers less than edge_min_along of the strip's
+  // longest extent (planes whose gradients differ by less than 0.1, nearly
+  // parallel, and lines missing the strip keep the centroid test alone).
+  // Without footprints only: with them the footprints divide the row, and
+  // parts of one footprint would be buildings of their own.
+  bool split_across_edges = true;
+  double edge_min_along = 0.5;
   // Roof faces of the lower envelope smaller than this, or lying mostly
   // outside their own patch (less than min_support of their area inside
   // the patch grown by adjacency_gap_m), are dropped and the envelope

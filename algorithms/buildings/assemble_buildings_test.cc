@@ -409,6 +409,37 @@ TEST(AssembleBuildings, ValleySplitsIntoConvexPartsOfOneBuilding) {
   EXPECT_EQ(AssembleBuildings(Gable(), Flat(0)).model.buildings.size(), 1u);
 }
 
+TEST(AssembleBuildings, AShedRoofBesideAGableIsAPartOfItsOwn) {
+  // A terraced row: the gable of Gable() and, beyond the party wall at
+  // x = 10, a shed roof rising north at 15 deg from an eave 1 m higher (as
+  // on `realistic` s1). The shed crosses both gable faces along lines
+  // parallel to the ridge, across the strip where the patches meet, not
+  // along it: one lower envelope over the three planes lays a strip of the
+  // shed plane between the gable's faces along the whole row.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in.push_back(Hyp(SlopedPlane({10, 0, 7}, 15, -90), {{10, 0}, {16, 0}, {16, 8}, {10, 8}}));
+  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  std::multiset<int> types;
+  for (const Building& b : r.model.buildings) types.insert(b.roof_type);
+  EXPECT_EQ(types, (std::multiset<int>{roof_type::kGabled, roof_type::kMonopitch}));
+  for (const Building& b : r.model.buildings)
+    if (b.roof_type == roof_type::kMonopitch)
+      EXPECT_NEAR(b.measured_height, 7 + 8 * std::tan(15 * M_PI / 180), 1e-6);
+  EXPECT_EQ(r.model.buildings[0].double_attributes.at("building_group"),
+            r.model.buildings[1].double_attributes.at("building_group"));
+  ExpectAllValid(r);
+
+  // Without the test the three planes make one roof of three faces.
+  AssemblyOptions o;
+  o.split_across_edges = false;
+  const AssemblyResult one = AssembleBuildings(in, Flat(0), o);
+  ASSERT_EQ(one.model.buildings.size(), 1u);
+  int roofs = 0;
+  for (const Surface& f : one.model.buildings[0].surfaces) roofs += f.type == SurfaceType::kRoof;
+  EXPECT_EQ(roofs, 3);
+}
+
 TEST(ConvexPolygon2, ClipIntersectDistance) {
   const Ring2 sq = ConvexHull({{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}});
   ASSERT_EQ(sq.size(), 4u);
