@@ -26,6 +26,46 @@ void Regularise(Eigen::Matrix2d* cov) { *cov += Eigen::Matrix2d::Identity() * 1e
 
 }  // namespace
 
+// Distances in no order cost std::nth_element a mispredicted branch per
+// element and round, and it ran in every C-step: two thirds of the
+// estimator's time.
+double SelectKth(std::vector<double>* values, std::vector<double>* buffer, int k) {
+  double* src = values->data();
+  double* dst = buffer->data();
+  int n = static_cast<int>(values->size());
+  while (n > 16) {
+    double a = src[0], b = src[n / 2], c = src[n - 1];
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    const double pivot = b;  // median of three
+    // Smaller values fill dst from the front, larger ones from the back;
+    // every value is written to both ends and only the right one kept.
+    int less = 0, greater = 0;
+    for (int i = 0; i < n; ++i) {
+      const double x = src[i];
+      dst[less] = x;
+      dst[n - 1 - greater] = x;
+      less += x < pivot;
+      greater += x > pivot;
+    }
+    if (k < less) {
+      std::swap(src, dst);
+      n = less;
+    } else if (k >= n - greater) {
+      k -= n - greater;
+      double* part = dst + (n - greater);
+      dst = src;
+      src = part;
+      n = greater;
+    } else {
+      return pivot;
+    }
+  }
+  std::nth_element(src, src + k, src + n);
+  return src[k];
+}
+
 Robust1D RobustMcd1D(std::vector<double> v) {
   Robust1D r;
   const int n = static_cast<int>(v.size());
@@ -124,48 +164,6 @@ void Distances(const std::vector<Eigen::Vector2d>& pts, const MeanCov& mc,
     const double dx = pts[i].x() - mc.mean.x(), dy = pts[i].y() - mc.mean.y();
     (*d2)[i] = a * dx * dx + 2 * b * dx * dy + c * dy * dy;
   }
-}
-
-// The k-th smallest (0-based) of `values`, by quickselect with a
-// branch-free three-way partition into `buffer` (both are overwritten; the
-// buffer has at least as many elements). Distances in no order cost
-// std::nth_element a mispredicted branch per element and round, and it ran
-// in every C-step: two thirds of the estimator's time.
-double SelectKth(std::vector<double>* values, std::vector<double>* buffer, int k) {
-  double* src = values->data();
-  double* dst = buffer->data();
-  int n = static_cast<int>(values->size());
-  while (n > 16) {
-    double a = src[0], b = src[n / 2], c = src[n - 1];
-    if (a > b) std::swap(a, b);
-    if (b > c) std::swap(b, c);
-    if (a > b) std::swap(a, b);
-    const double pivot = b;  // median of three
-    // Smaller values fill dst from the front, larger ones from the back;
-    // every value is written to both ends and only the right one kept.
-    int less = 0, greater = 0;
-    for (int i = 0; i < n; ++i) {
-      const double x = src[i];
-      dst[less] = x;
-      dst[n - 1 - greater] = x;
-      less += x < pivot;
-      greater += x > pivot;
-    }
-    if (k < less) {
-      std::swap(src, dst);
-      n = less;
-    } else if (k >= n - greater) {
-      k -= n - greater;
-      double* part = dst + (n - greater);
-      dst = src;
-      src = part;
-      n = greater;
-    } else {
-      return pivot;
-    }
-  }
-  std::nth_element(src, src + k, src + n);
-  return src[k];
 }
 
 // Marks the h points of smallest distance, ties going to the lower index.

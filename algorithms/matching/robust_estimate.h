@@ -35,4 +35,9 @@ struct Robust2D {
 Robust2D RobustMcd2D(const std::vector<Eigen::Vector2d>& points, unsigned seed = 1,
                      int starts = 20);
 
+// The k-th smallest (0-based) of `values`, the value std::nth_element
+// would place at k, by quickselect with a branch-free three-way partition
+// into `buffer`. Both are overwritten; the buffer needs as many elements.
+double SelectKth(std::vector<double>* values, std::vector<double>* buffer, int k);
+
 }  // namespace roofsweep

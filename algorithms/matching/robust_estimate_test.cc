@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace roofsweep {
@@ -43,6 +44,42 @@ TEST(RobustMcd2D, IgnoresThirtyPercentOutliers) {
   for (const auto& p : pts) m += p;
   m /= pts.size();
   EXPECT_GT((m - Eigen::Vector2d(10, -5)).norm(), 5);
+}
+
+TEST(SelectKth, AgreesWithNthElement) {
+  std::mt19937 rng(11);
+  for (int n : {1, 2, 16, 17, 40, 151, 400}) {
+    for (int levels : {3, 1000000}) {  // many ties, almost none
+      std::uniform_int_distribution<int> v(0, levels - 1);
+      std::vector<double> values(n);
+      for (double& x : values) x = v(rng) * 0.25;
+      for (int k = 0; k < n; ++k) {
+        std::vector<double> a = values, b = values, buffer(n);
+        std::nth_element(b.begin(), b.begin() + k, b.end());
+        ASSERT_EQ(SelectKth(&a, &buffer, k), b[k]) << "n " << n << " k " << k;
+      }
+    }
+  }
+}
+
+TEST(RobustMcd2D, QuantisedColoursWithManyTies) {
+  // a*, b* of an 8-bit flat roof take a few values only: most squared
+  // distances tie, which the h-subset selection must handle (the h-th
+  // smallest often lies among equal values).
+  std::vector<Eigen::Vector2d> pts;
+  for (int i = 0; i < 140; ++i) pts.emplace_back(i % 3, (i / 3) % 3);
+  for (int i = 0; i < 60; ++i) pts.emplace_back(20 + i % 2, 20);
+  const Robust2D r = RobustMcd2D(pts, 7, 4);
+  ASSERT_TRUE(r.valid);
+  EXPECT_NEAR(r.mean.x(), 1, 0.1);
+  EXPECT_NEAR(r.mean.y(), 1, 0.1);
+  EXPECT_GE(r.inliers, 130);
+  EXPECT_LE(r.inliers, 140);
+  // All equal: the scatter is the regularisation alone.
+  const Robust2D same = RobustMcd2D(std::vector<Eigen::Vector2d>(100, {3, -2}), 1, 4);
+  ASSERT_TRUE(same.valid);
+  EXPECT_EQ(same.mean, Eigen::Vector2d(3, -2));
+  EXPECT_LT(same.cov.norm(), 1e-3);
 }
 
 TEST(RobustMcd2D, TooFewPointsIsInvalid) { EXPECT_FALSE(RobustMcd2D({{0, 0}, {1, 1}}).valid); }
