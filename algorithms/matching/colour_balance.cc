@@ -150,29 +150,41 @@ std::vector<ColourCorrection> EstimateColourBalance(const Block& block,
   return out;
 }
 
-cv::Mat ApplyColourCorrection(const cv::Mat& image, const ColourCorrection& k) {
-  if (image.type() != CV_32FC3 || k.Identity()) return image;
-  // A lookup table over the encoded range (8-bit sources hold 256 levels;
-  // 4096 entries keep float inputs within 1e-3).
-  constexpr int kLut = 4096;
-  std::vector<float> lut[3];
+// 8-bit sources hold 256 levels; 4096 entries keep float inputs within
+// 1e-3.
+constexpr int kLut = 4096;
+
+ColourCorrectionTable::ColourCorrectionTable(const ColourCorrection& k) : identity_(k.Identity()) {
+  if (identity_) return;
   for (int c = 0; c < 3; ++c) {
-    lut[c].resize(kLut + 1);
+    lut_[c].resize(kLut + 1);
     for (int t = 0; t <= kLut; ++t)
-      lut[c][t] = static_cast<float>(
+      lut_[c][t] = static_cast<float>(
           LinearToSrgb(k.gain[c] * SrgbToLinear(static_cast<double>(t) / kLut) + k.offset[c]));
   }
+}
+
+void ColourCorrectionTable::Apply(const cv::Vec3f* in, cv::Vec3f* out, int n) const {
+  for (int x = 0; x < n; ++x)
+    for (int c = 0; c < 3; ++c) {
+      const float v = std::clamp(in[x][c], 0.f, 1.f);
+      if (identity_) {
+        out[x][c] = v;
+        continue;
+      }
+      const float t = v * kLut;
+      const int t0 = std::min(static_cast<int>(t), kLut - 1);
+      const float f = t - t0;
+      out[x][c] = lut_[c][t0] + f * (lut_[c][t0 + 1] - lut_[c][t0]);
+    }
+}
+
+cv::Mat ApplyColourCorrection(const cv::Mat& image, const ColourCorrection& k) {
+  if (image.type() != CV_32FC3 || k.Identity()) return image;
+  const ColourCorrectionTable table(k);
   cv::Mat out(image.size(), CV_32FC3);
   tbb::parallel_for(0, image.rows, [&](int y) {
-    const cv::Vec3f* in = image.ptr<cv::Vec3f>(y);
-    cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-    for (int x = 0; x < image.cols; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const float t = std::clamp(in[x][c], 0.f, 1.f) * kLut;
-        const int t0 = std::min(static_cast<int>(t), kLut - 1);
-        const float f = t - t0;
-        o[x][c] = lut[c][t0] + f * (lut[c][t0 + 1] - lut[c][t0]);
-      }
+    table.Apply(image.ptr<cv::Vec3f>(y), out.ptr<cv::Vec3f>(y), image.cols);
   });
   return out;
 }

@@ -32,6 +32,21 @@ struct ColourCorrection {
 std::vector<ColourCorrection> EstimateColourBalance(const Block& block,
                                                     const std::vector<cv::Mat>& images);
 
+// A correction as per-channel lookup tables over the encoded range, to
+// apply it row by row where the image is converted anyway (PrepareView)
+// rather than into a copy of the whole image.
+class ColourCorrectionTable {
+ public:
+  explicit ColourCorrectionTable(const ColourCorrection& correction);
+  bool Identity() const { return identity_; }
+  // Corrects n pixels (R, G, B in [0, 1]; inputs are clamped to it first).
+  void Apply(const cv::Vec3f* in, cv::Vec3f* out, int n) const;
+
+ private:
+  bool identity_ = true;
+  std::vector<float> lut_[3];
+};
+
 // Applies a correction to an sRGB-encoded CV_32FC3 image in [0, 1] (returns
 // a new image; grey images and identity corrections come back unchanged).
 cv::Mat ApplyColourCorrection(const cv::Mat& image, const ColourCorrection& correction);

@@ -110,8 +110,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   if (o.colour_balance) balance = EstimateColourBalance(block, images);
   std::vector<ViewFeatures> views(nv);
   tbb::parallel_for(0, nv, [&](int v) {
-    views[v] =
-        PrepareView(block, v, ApplyColourCorrection(images[v], balance[v]), res.segments[v], o);
+    views[v] = PrepareView(block, v, images[v], res.segments[v], o, balance[v]);
   });
   res.timings.features_s = Seconds(t0);
 

@@ -116,7 +116,7 @@ SideColour RegionColour(const cv::Mat& lab, const std::vector<Eigen::Vector2d>& 
 }
 
 ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Segments2D segments,
-                         const MatchOptions& options) {
+                         const MatchOptions& options, const ColourCorrection& correction) {
   if (image.empty() || (image.type() != CV_32FC3 && image.type() != CV_32FC1))
     throw Error("match: image of view " + block.views.at(view).name +
                 " must be CV_32FC3 or CV_32FC1");
@@ -133,6 +133,7 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
   } else {
     rgb = image;
   }
+  const ColourCorrectionTable table(image.channels() == 1 ? ColourCorrection{} : correction);
   // In row bands: no full-size clipped copy (each 48 MB temporary of a
   // 2048² view costs more in page faults than in arithmetic).
   f.lab.create(rgb.size(), CV_32FC3);
@@ -141,8 +142,14 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
   std::vector<float> chroma(bands, 0.f);  // max |a*|, |b*| per band
   tbb::parallel_for(0, bands, [&](int b) {
     const cv::Range rows(b * kBand, std::min(rgb.rows, (b + 1) * kBand));
-    cv::Mat clipped;
-    cv::min(cv::max(rgb.rowRange(rows), 0.0), 1.0, clipped);
+    cv::Mat clipped(rows.size(), rgb.cols, CV_32FC3);
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* out = clipped.ptr<cv::Vec3f>(y - rows.start);
+      table.Apply(rgb.ptr<cv::Vec3f>(y), out, rgb.cols);
+      if (!table.Identity())  // a gain above 1 can push values past 1
+        for (int x = 0; x < rgb.cols; ++x)
+          for (int c = 0; c < 3; ++c) out[x][c] = std::clamp(out[x][c], 0.f, 1.f);
+    }
     cv::Mat lab = f.lab.rowRange(rows);
     cv::cvtColor(clipped, lab, cv::COLOR_RGB2Lab);
     for (int y = 0; y < lab.rows; ++y) {

@@ -9,6 +9,7 @@
 #include "algorithms/edges/segment2d.h"
 #include "algorithms/edges/segment_index.h"
 #include "algorithms/geometry/block.h"
+#include "algorithms/matching/colour_balance.h"
 #include "algorithms/matching/match_options.h"
 
 namespace roofsweep {
@@ -62,9 +63,11 @@ struct ViewFeatures {
 
 // Builds the features of one view from its RGB image (CV_32FC3 in [0, 1],
 // or CV_32FC1 grey) and detected segments (segments shorter than
-// options.min_length are kept but get no attributes).
+// options.min_length are kept but get no attributes). The colour correction
+// is applied on the way to L*a*b* (as ApplyColourCorrection would, without
+// the copy of the image); grey images ignore it.
 ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Segments2D segments,
-                         const MatchOptions& options);
+                         const MatchOptions& options, const ColourCorrection& correction = {});
 
 // The pixels of one adaptive flanking region (§3.2.1), as image positions
 // (pixel centres), grown row by row away from the segment with the 3x3
