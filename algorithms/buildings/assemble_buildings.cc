@@ -833,6 +833,14 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   // dropped below, what it held together may fall apart into separate
   // buildings.
   std::vector<std::vector<int>> part_links(n);
+  // The part links whose planes cross along the strip where they meet (see
+  // AssemblyOptions::split_across_edges): a part whose envelope keeps every
+  // face still falls apart where only crossing-across links hold it
+  // together. Applied after the envelope rather than to the links, so that
+  // a plane the envelope drops (a false plane in the gap between two
+  // roofs) is not rescued as a part of its own.
+  const bool split_across = o.split_across_edges && footprints.empty();
+  std::vector<std::vector<int>> edge_links(n);
   std::vector<Ring2> grown(n);
   for (int i = 0; i < n; ++i) grown[i] = GrowConvex(planes[i].patch, o.adjacency_gap_m);
   for (int i = 0; i < n; ++i)
@@ -847,12 +855,15 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       const Eigen::Vector2d ci = Centroid(planes[i].patch), cj = Centroid(planes[j].patch);
       const bool convex =
           PlaneZ(planes[i].plane, ci) <= PlaneZ(planes[j].plane, ci) + o.max_step_m &&
-          PlaneZ(planes[j].plane, cj) <= PlaneZ(planes[i].plane, cj) + o.max_step_m &&
-          (!o.split_across_edges || !footprints.empty() ||
-           CrossAlongMeet(planes[i], grown[i], planes[j], grown[j], o.edge_min_along));
+          PlaneZ(planes[j].plane, cj) <= PlaneZ(planes[i].plane, cj) + o.max_step_m;
       if (convex || !o.split_at_valleys) {
         part_links[i].push_back(j);
         part_links[j].push_back(i);
+        if (!split_across ||
+            CrossAlongMeet(planes[i], grown[i], planes[j], grown[j], o.edge_min_along)) {
+          edge_links[i].push_back(j);
+          edge_links[j].push_back(i);
+        }
       }
     }
   // Building hypotheses as a queue: a hypothesis that falls apart when a
@@ -910,6 +921,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
             std::vector<int> links = part_links[i];
             part_links.push_back(std::move(links));
             for (int k : part_links[i]) part_links[k].push_back(j);
+            std::vector<int> along = edge_links[i];
+            edge_links.push_back(std::move(along));
+            for (int k : edge_links[i]) edge_links[k].push_back(j);
             side[0].push_back(i);
             side[1].push_back(j);
           }
@@ -983,6 +997,16 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       if (outline.size() < 3) break;
       Envelope e = LowerEnvelope(planes, active, outline, grown, ground, o, o.min_support);
       if (e.worst < 0) {
+        std::vector<std::vector<int>> parts;
+        if (split_across) parts = ConnectedPieces(active, edge_links);
+        if (parts.size() > 1) {
+          for (size_t k = 1; k < parts.size(); ++k) {
+            groups.emplace_back(root, std::move(parts[k]));
+            ++res.hypotheses;
+          }
+          active = std::move(parts[0]);
+          continue;
+        }
         env = std::move(e);
         break;
       }

@@ -91,6 +91,9 @@ struct AssemblyOptions {
   // the crossing line covers less than edge_min_along of the strip's
   // longest extent (planes whose gradients differ by less than 0.1, nearly
   // parallel, and lines missing the strip keep the centroid test alone).
+  // The split comes after the envelope has dropped the planes it cannot
+  // support: a false plane in the gap between two roofs that crosses them
+  // across is dropped there as before, not built as a part of its own.
   // Without footprints only: with them the footprints divide the row, and
   // parts of one footprint would be buildings of their own.
   bool split_across_edges = true;

@@ -423,9 +423,11 @@ TEST(AssembleBuildings, AShedRoofBesideAGableIsAPartOfItsOwn) {
   std::multiset<int> types;
   for (const Building& b : r.model.buildings) types.insert(b.roof_type);
   EXPECT_EQ(types, (std::multiset<int>{roof_type::kGabled, roof_type::kMonopitch}));
-  for (const Building& b : r.model.buildings)
-    if (b.roof_type == roof_type::kMonopitch)
+  for (const Building& b : r.model.buildings) {
+    if (b.roof_type == roof_type::kMonopitch) {
       EXPECT_NEAR(b.measured_height, 7 + 8 * std::tan(15 * M_PI / 180), 1e-6);
+    }
+  }
   EXPECT_EQ(r.model.buildings[0].double_attributes.at("building_group"),
             r.model.buildings[1].double_attributes.at("building_group"));
   ExpectAllValid(r);
@@ -438,6 +440,22 @@ TEST(AssembleBuildings, AShedRoofBesideAGableIsAPartOfItsOwn) {
   int roofs = 0;
   for (const Surface& f : one.model.buildings[0].surfaces) roofs += f.type == SurfaceType::kRoof;
   EXPECT_EQ(roofs, 3);
+}
+
+TEST(AssembleBuildings, APlaneTheEnvelopeDropsIsNotRescuedAsAPartOfItsOwn) {
+  // A flat plane 1 m wide beside the gable at 7.2 m (a false plane in the
+  // gap to the next house): it crosses the gable's faces across the strip
+  // where they meet, but in their envelope its face lies mostly outside
+  // its patch, so it is dropped before any part is split off.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in.push_back(Hyp({0, 0, 1, -7.2}, {{10, 0}, {11, 0}, {11, 8}, {10, 8}}));
+  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  EXPECT_TRUE(r.plane_building[2].empty());
+  EXPECT_TRUE(std::any_of(r.rejected.begin(), r.rejected.end(), [](const std::string& why) {
+    return why.find("where the images saw the plane") != std::string::npos;
+  }));
 }
 
 TEST(ConvexPolygon2, ClipIntersectDistance) {

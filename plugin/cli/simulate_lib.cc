@@ -218,7 +218,7 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   edges.crs = crs;
   for (const sim::TrueEdge& e : sim.truth.edges) {
     edges.segments.push_back(
-        {{frame.ToCrs(e.a), frame.ToCrs(e.b)}, sim::EdgeKindName(e.kind), e.building});
+        {{frame.ToCrs(e.a), frame.ToCrs(e.b)}, sim::EdgeKindName(e.kind), e.building, {}});
   }
   WriteSegmentsJson(edges, dir + "/groundtruth_edges.json", false);
 
