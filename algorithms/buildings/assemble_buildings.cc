@@ -183,21 +183,10 @@ bool PlanesMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p, const RoofPl
   return std::abs(PlaneZ(p.plane, c) - PlaneZ(q.plane, c)) <= o.max_step_m;
 }
 
-// Length of the chord that the line n . x + k = 0 cuts from a convex ring.
-double ChordLength(const Ring2& ring, const Eigen::Vector2d& n, double k) {
-  std::vector<Eigen::Vector2d> hits;
-  for (size_t a = 0, m = ring.size(); a < m; ++a) {
-    const Eigen::Vector2d& p = ring[a];
-    const Eigen::Vector2d& q = ring[(a + 1) % m];
-    const double sp = n.dot(p) + k, sq = n.dot(q) + k;
-    if ((sp < 0) == (sq < 0) || sp == sq) continue;
-    hits.push_back(p + (q - p) * (sp / (sp - sq)));
-  }
-  double longest = 0;
-  for (size_t a = 0; a < hits.size(); ++a)
-    for (size_t b = a + 1; b < hits.size(); ++b)
-      longest = std::max(longest, (hits[a] - hits[b]).norm());
-  return longest;
+// The part of the patch within 1 mm of the line normal . x + offset = 0.
+Ring2 AlongLine(const Ring2& patch, const Eigen::Vector2d& normal, double offset) {
+  return ClipHalfPlane(ClipHalfPlane(patch, normal.x(), normal.y(), offset - 1e-3), -normal.x(),
+                       -normal.y(), -offset - 1e-3);
 }
 
 double Diameter(const Ring2& ring) {
@@ -219,7 +208,8 @@ bool CrossAlongMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p,
   if (n.norm() < 0.1) return true;
   const Ring2 meet = IntersectConvex(grown_p, grown_q);
   if (meet.size() < 3) return true;
-  const double chord = ChordLength(meet, n, -a[3] / a[2] + b[3] / b[2]);
+  const double k = -a[3] / a[2] + b[3] / b[2];
+  const double chord = Diameter(AlongLine(meet, n / n.norm(), k / n.norm()));
   return chord == 0 || chord >= min_along * Diameter(meet);
 }
 
@@ -683,12 +673,6 @@ struct PartyCut {
   // face's depth at both ends (over the ridge into the facing roof face).
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
 };
-
-// The part of the patch within 1 mm of the line normal . x + offset = 0.
-Ring2 AlongLine(const Ring2& patch, const Eigen::Vector2d& normal, double offset) {
-  return ClipHalfPlane(ClipHalfPlane(patch, normal.x(), normal.y(), offset - 1e-3), -normal.x(),
-                       -normal.y(), -offset - 1e-3);
-}
 
 // True when the cut's stretch crosses the patch.
 bool CutReaches(const PartyCut& c, const Ring2& patch) {

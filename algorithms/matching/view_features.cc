@@ -143,13 +143,10 @@ ViewFeatures PrepareView(const Block& block, int view, const cv::Mat& image, Seg
   tbb::parallel_for(0, bands, [&](int b) {
     const cv::Range rows(b * kBand, std::min(rgb.rows, (b + 1) * kBand));
     cv::Mat clipped(rows.size(), rgb.cols, CV_32FC3);
-    for (int y = rows.start; y < rows.end; ++y) {
-      cv::Vec3f* out = clipped.ptr<cv::Vec3f>(y - rows.start);
-      table.Apply(rgb.ptr<cv::Vec3f>(y), out, rgb.cols);
-      if (!table.Identity())  // a gain above 1 can push values past 1
-        for (int x = 0; x < rgb.cols; ++x)
-          for (int c = 0; c < 3; ++c) out[x][c] = std::clamp(out[x][c], 0.f, 1.f);
-    }
+    for (int y = rows.start; y < rows.end; ++y)
+      table.Apply(rgb.ptr<cv::Vec3f>(y), clipped.ptr<cv::Vec3f>(y - rows.start), rgb.cols);
+    // A gain above 1 can push corrected values past 1.
+    if (!table.Identity()) cv::min(cv::max(clipped, 0.0), 1.0, clipped);
     cv::Mat lab = f.lab.rowRange(rows);
     cv::cvtColor(clipped, lab, cv::COLOR_RGB2Lab);
     for (int y = 0; y < lab.rows; ++y) {
