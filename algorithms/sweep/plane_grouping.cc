@@ -2,9 +2,11 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
@@ -58,33 +60,66 @@ std::pair<double, double> LineInterval(const Ring2& ring, const Eigen::Vector2d&
 
 }  // namespace
 
-bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& o) {
-  if (p.patch.size() < 3 || q.patch.size() < 3) return false;
-  const Eigen::Vector3d np = p.plane.head<3>(), nq = q.plane.head<3>();
+namespace {
+
+// The plan-view line x + t d where planes p and q meet, when each patch
+// lies on its own side of it with at most max_across of its area on the
+// other's: the two are faces that border each other there (a ridge, a
+// valley, a hip) rather than rivals for the same roof. Nothing when the
+// planes are within min_angle_deg or meet in a nearly vertical line.
+struct MeetLine {
+  Eigen::Vector2d x, d;
+  double plan_to_3d = 1;  // 3D length per plan length along the line
+};
+std::optional<MeetLine> BorderBetween(const Eigen::Vector4d& p_plane, const Ring2& p_patch,
+                                      const Eigen::Vector4d& q_plane, const Ring2& q_patch,
+                                      double min_angle_deg, double max_across) {
+  if (p_patch.size() < 3 || q_patch.size() < 3) return std::nullopt;
+  const Eigen::Vector3d np = p_plane.head<3>(), nq = q_plane.head<3>();
   const Eigen::Vector3d u = np.cross(nq);
-  if (u.norm() < std::sin(o.virtual_min_angle_deg * kDeg)) return false;
+  if (u.norm() < std::sin(min_angle_deg * kDeg)) return std::nullopt;
   // A point on both planes (n . X = -d for each).
   const Eigen::Vector3d x0 =
-      (-p.plane[3] * nq.cross(u) - q.plane[3] * u.cross(np)) / u.squaredNorm();
+      (-p_plane[3] * nq.cross(u) - q_plane[3] * u.cross(np)) / u.squaredNorm();
   const Eigen::Vector2d dir = u.head<2>();
-  if (dir.norm() < 0.1 * u.norm()) return false;  // a nearly vertical intersection
+  if (dir.norm() < 0.1 * u.norm()) return std::nullopt;  // a nearly vertical intersection
   const Eigen::Vector2d d = dir.normalized(), x = x0.head<2>();
   // The plan line a x + b y + c = 0 through x along d.
   const double a = -d.y(), b = d.x(), c = -(a * x.x() + b * x.y());
-  const auto [p_neg, p_pos] = SideAreas(p.patch, a, b, c);
-  const auto [q_neg, q_pos] = SideAreas(q.patch, a, b, c);
+  const auto [p_neg, p_pos] = SideAreas(p_patch, a, b, c);
+  const auto [q_neg, q_pos] = SideAreas(q_patch, a, b, c);
   const double pa = p_neg + p_pos, qa = q_neg + q_pos;
-  if (pa <= 0 || qa <= 0) return false;
+  if (pa <= 0 || qa <= 0) return std::nullopt;
   const bool p_on_neg = p_neg >= p_pos, q_on_neg = q_neg >= q_pos;
-  if (p_on_neg == q_on_neg) return false;  // both on one side: no border between them
-  if (std::min(p_neg, p_pos) > o.virtual_max_across * pa ||
-      std::min(q_neg, q_pos) > o.virtual_max_across * qa)
-    return false;
-  const auto [a0, a1] = LineInterval(GrowConvex(p.patch, o.max_gap_m), x, d);
-  const auto [b0, b1] = LineInterval(GrowConvex(q.patch, o.max_gap_m), x, d);
+  if (p_on_neg == q_on_neg) return std::nullopt;  // both on one side: no border between them
+  if (std::min(p_neg, p_pos) > max_across * pa || std::min(q_neg, q_pos) > max_across * qa)
+    return std::nullopt;
+  return MeetLine{x, d, u.norm() / dir.norm()};
+}
+
+// True when one of `lines` (plan view) runs along the meet line: both ends
+// within max_offset of it, at least min_length long.
+bool LineAlong(const MeetLine& m, const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
+               double max_offset, double min_length) {
+  const Eigen::Vector2d across(-m.d.y(), m.d.x());
+  for (const auto& l : lines)
+    if ((l[1] - l[0]).norm() >= min_length && std::abs(across.dot(l[0] - m.x)) <= max_offset &&
+        std::abs(across.dot(l[1] - m.x)) <= max_offset)
+      return true;
+  return false;
+}
+
+}  // namespace
+
+bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& o) {
+  const auto line = BorderBetween(p.plane, p.patch, q.plane, q.patch, o.virtual_min_angle_deg,
+                                  o.virtual_max_across);
+  if (!line) return false;
+  const auto [a0, a1] = LineInterval(GrowConvex(p.patch, o.max_gap_m), line->x, line->d);
+  const auto [b0, b1] = LineInterval(GrowConvex(q.patch, o.max_gap_m), line->x, line->d);
   const double plan_length = std::min(a1, b1) - std::max(a0, b0);
   // Plan length to 3D length along the (possibly inclined) intersection.
-  return plan_length * u.norm() / dir.norm() >= o.virtual_min_length_m;
+  return plan_length * line->plan_to_3d >= o.virtual_min_length_m;
 }
 
 std::vector<Eigen::Vector2d> HalfPlanePatch(const SweepLine& line, const HalfPlane& h,
@@ -169,7 +204,7 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 }
 
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
-                                          double max_overlap) {
+                                          const GroupingOptions& o) {
   std::vector<RoofPlaneHypothesis>& p = *planes;
   std::vector<int> by_score(p.size());
   std::iota(by_score.begin(), by_score.end(), 0);
@@ -189,11 +224,22 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       if (inter.empty()) continue;
       const double f = std::abs(SignedArea(inter)) /
                        std::max(1e-9, std::min(area, std::abs(SignedArea(p[j].patch))));
-      if (f > max_overlap) {
-        conflict = j;
-        overlap = f;
-        break;
+      if (f <= o.max_overlap) continue;
+      // Two faces whose patches spill over the line where they meet (both
+      // faces of a gable past its ridge) overlap without competing, when a
+      // 3D line of each runs along that line: the border was seen.
+      if (o.conflict_meet_max_across > 0 && f <= o.conflict_meet_max_overlap) {
+        const auto meet = BorderBetween(p[k].plane, p[k].patch, p[j].plane, p[j].patch,
+                                        o.virtual_min_angle_deg, o.conflict_meet_max_across);
+        if (meet &&
+            LineAlong(*meet, p[k].lines_xy, o.conflict_meet_line_offset_m,
+                      o.virtual_min_length_m) &&
+            LineAlong(*meet, p[j].lines_xy, o.conflict_meet_line_offset_m, o.virtual_min_length_m))
+          continue;
       }
+      conflict = j;
+      overlap = f;
+      break;
     }
     if (conflict >= 0) {
       char buf[300];

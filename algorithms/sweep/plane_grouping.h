@@ -27,6 +27,17 @@ struct GroupingOptions {
   // both be roof (coplanar ones were merged by the grouping); the one with
   // the lower score is dropped.
   double max_overlap = 0.5;
+  // Unless they are two faces that meet: each patch on its own side of
+  // the line where the planes intersect (at most conflict_meet_max_across
+  // of either across), an overlap of at most conflict_meet_max_overlap, and
+  // a supporting line of each plane, virtual_min_length_m or longer, along
+  // that line (within conflict_meet_line_offset_m in plan view). That is
+  // a gable whose two patches both run past the ridge; a small plane
+  // inside the spill of a larger one overlaps it almost wholly and stays
+  // its rival. conflict_meet_max_across = 0 turns this off.
+  double conflict_meet_max_across = 0.45;
+  double conflict_meet_max_overlap = 0.7;
+  double conflict_meet_line_offset_m = 0.5;
   // §5: "at least two lines (one of them can be virtual) are required to
   // accept a plane", an efficient culling of erroneous one-line half-planes
   // (tree crowns, shadows). Applied by DropWeaklySupported after the
@@ -74,9 +85,10 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 // patch area x verified photometric score; planes accepted on their lines
 // after those the images confirmed, derived planes after all found ones),
 // a plane whose patch overlaps a kept one's by more than max_overlap
-// is dropped. Returns the reasons.
+// is dropped, unless the two meet along a line that parts their patches
+// (conflict_meet_max_across). Returns the reasons.
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
-                                          double max_overlap);
+                                          const GroupingOptions& options);
 
 // True when p and q meet along a virtual line (see GroupingOptions).
 bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& options);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
@@ -102,7 +103,7 @@ TEST(PlaneGrouping, FarApartCoplanarFacesStaySeparateAndConflictsResolve) {
   const GroupingResult r = GroupHalfPlanes(lines, hps);
   ASSERT_EQ(r.planes.size(), 3u);
   std::vector<RoofPlaneHypothesis> planes = ToRoofPlanes(r.planes);
-  const std::vector<std::string> rejected = ResolveConflicts(&planes, 0.5);
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 2u);
   EXPECT_EQ(planes[0].lines, 1);
   EXPECT_EQ(r.planes[0].lines, std::vector<int>{0});
@@ -122,7 +123,7 @@ TEST(PlaneGrouping, DerivedPlanesYieldToFoundOnesInConflicts) {
   derived.score = 100;  // larger and better scored, but only proposed
   derived.derived = true;
   std::vector<RoofPlaneHypothesis> planes = {derived, found};
-  const std::vector<std::string> rejected = ResolveConflicts(&planes, 0.5);
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 1u);
   EXPECT_EQ(planes[0].id, "found");
   ASSERT_EQ(rejected.size(), 1u);
@@ -148,13 +149,79 @@ TEST(PlaneGrouping, PlanesAcceptedOnTheirLinesYieldToConfirmedOnes) {
   on_lines_too.id = "on lines too";
   on_lines_too.patch = derived.patch;
   std::vector<RoofPlaneHypothesis> planes = {on_lines, derived, confirmed, on_lines_too};
-  const std::vector<std::string> rejected = ResolveConflicts(&planes, 0.5);
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 2u);
   EXPECT_EQ(planes[0].id, "confirmed");
   EXPECT_EQ(planes[1].id, "on lines too");
   ASSERT_EQ(rejected.size(), 2u);
   EXPECT_EQ(rejected[0].rfind("on lines: overlaps the stronger confirmed", 0), 0u) << rejected[0];
   EXPECT_EQ(rejected[1].rfind("derived: overlaps the stronger on lines too", 0), 0u) << rejected[1];
+}
+
+// A roof plane hypothesis through `point` with unit normal `n` over an
+// axis-aligned plan rectangle.
+RoofPlaneHypothesis Face(const std::string& id, const Eigen::Vector3d& n,
+                         const Eigen::Vector3d& point, double x0, double y0, double x1, double y1,
+                         double score) {
+  RoofPlaneHypothesis h;
+  h.id = id;
+  h.plane << n, -n.dot(point);
+  h.patch = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  h.score = score;
+  return h;
+}
+
+TEST(PlaneGrouping, TheTwoFacesOfAGableMeetAtTheRidgeInsteadOfConflicting) {
+  Gable g;
+  const Eigen::Vector3d ridge(0, 4, 8);
+  // Both patches run 2 m past the ridge (y = 4): they overlap by two
+  // thirds, but the ridge parts them, a third of each across, and the
+  // ridge line supports both.
+  RoofPlaneHypothesis south = Face("south", g.south, ridge, 0, 0, 10, 6, 2);
+  RoofPlaneHypothesis north = Face("north", g.north, ridge, 0, 2, 10, 8, 1);
+  const std::array<Eigen::Vector2d, 2> ridge_xy = {Eigen::Vector2d(1, 4.1),
+                                                   Eigen::Vector2d(9, 3.9)};
+  south.lines_xy = {ridge_xy, {Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 0)}};
+  north.lines_xy = {ridge_xy};
+  std::vector<RoofPlaneHypothesis> planes = {south, north};
+  EXPECT_TRUE(ResolveConflicts(&planes, GroupingOptions{}).empty());
+  EXPECT_EQ(planes.size(), 2u);
+
+  // No line along the ridge in one of them: nothing shows that the two
+  // faces border there, and they compete.
+  RoofPlaneHypothesis north_eave_only = north;
+  north_eave_only.lines_xy = {{Eigen::Vector2d(0, 8), Eigen::Vector2d(10, 8)}};
+  planes = {south, north_eave_only};
+  EXPECT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  EXPECT_EQ(planes.size(), 1u);
+
+  // Without the rule, the weaker face goes.
+  GroupingOptions off;
+  off.conflict_meet_max_across = 0;
+  planes = {south, north};
+  const std::vector<std::string> rejected = ResolveConflicts(&planes, off);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "south");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind("north: overlaps the stronger south", 0), 0u) << rejected[0];
+
+  // A plane whose whole patch lies in the south face's spill is a rival,
+  // not a neighbour, though it lies on its own side of the line where the
+  // two meet.
+  RoofPlaneHypothesis inside = Face("inside", g.north, ridge, 0, 4.2, 10, 5.8, 1);
+  inside.lines_xy = {ridge_xy};
+  planes = {south, inside};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "south");
+
+  // Nor are two faces neighbours that both lie mostly on one side of the
+  // line where they meet (an overlap of 65 %).
+  RoofPlaneHypothesis astray = Face("astray", g.north, ridge, 3.5, 0, 13.5, 4.5, 1);
+  astray.lines_xy = {ridge_xy};
+  planes = {south, astray};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  EXPECT_EQ(planes[0].id, "south");
 }
 
 TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {

@@ -410,7 +410,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<RoofPlaneHypothesis> verified;
     KeepVerified(std::move(roof_planes), checks, &verified, &out.rejected, trace);
     const size_t n_verified = verified.size();
-    const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping.max_overlap);
+    const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping);
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
     const std::vector<std::string> orphans = DropOrphanedPlanes(&verified, r.grouping);
     out.rejected.insert(out.rejected.end(), orphans.begin(), orphans.end());
@@ -442,8 +442,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       const size_t before = roof_planes.size();
       KeepVerified(std::move(extra), checks, &roof_planes, &out.rejected, trace);
       const int now = static_cast<int>(roof_planes.size() - before);
-      const std::vector<std::string> conflicts =
-          ResolveConflicts(&roof_planes, r.grouping.max_overlap);
+      const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
       out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
       confirmed += now;
       if (now == 0) break;
@@ -484,8 +483,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     const std::vector<PlaneVerification> checks = VerifyPlanes(block, images, flat, r.verify, none);
     KeepVerified(std::move(flat), checks, &roof_planes, &out.rejected, trace);
     const size_t confirmed = roof_planes.size() - before;
-    const std::vector<std::string> conflicts =
-        ResolveConflicts(&roof_planes, r.grouping.max_overlap);
+    const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
     out.stages.push_back(
         {"flat roofs over bare footprints",
