@@ -31,6 +31,7 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
+  bool no_mirror = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -70,7 +71,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "a roof plane needs N supporting 3D lines, one of them may be virtual: its "
               "intersection with a neighbouring plane (default 2, as in the paper)")
       .Flag("-sweep_planes_only", &sweep_only,
-            "planes from the sweep only, not also from pairs of coplanar lines");
+            "planes from the sweep only, not also from pairs of coplanar lines")
+      .Flag("-no_mirror_faces", &no_mirror,
+            "do not propose, beyond a ridge line, the mirror image of a roof face found from "
+            "one side of it only (completion by symmetry, verified like any plane)");
   MatchFlags flags;
   AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
@@ -78,6 +82,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg");
   if (!p.Parse(args)) return 0;
   r.line_planes = !sweep_only;
+  r.mirror_faces = !no_mirror;
   flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {

@@ -421,6 +421,26 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     roof_planes = std::move(verified);
   }
 
+  // Completion by symmetry: the face beyond each ridge the sweep found
+  // from one side only, verified like the others; derived, so it yields
+  // in conflicts to every plane found directly.
+  if (r.mirror_faces) {
+    t0 = Clock::now();
+    std::vector<RoofPlaneHypothesis> mirrored = MirroredFaces(roof_planes, r.mirror);
+    const size_t proposed = mirrored.size(), before = roof_planes.size();
+    SubProgress none(progress, 0.99, 0.99);
+    const std::vector<PlaneVerification> checks =
+        VerifyPlanes(block, images, mirrored, r.verify, none);
+    KeepVerified(std::move(mirrored), checks, &roof_planes, &out.rejected, trace);
+    const size_t confirmed = roof_planes.size() - before;
+    const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
+    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    out.stages.push_back(
+        {"mirrored faces",
+         StrFormat("%zu faces beyond a ridge proposed, %zu confirmed", proposed, confirmed),
+         Since(t0)});
+  }
+
   // Completion by footprints: planes of neighbouring footprints (terraced
   // houses) proposed over each footprint, verified like the others, and
   // kept where they conflict with no plane found directly; repeated while

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/buildings/mirror_completion.h"
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
 #include "algorithms/matching/match_options.h"
@@ -50,6 +51,10 @@ struct RunRequest {
   // With footprints: a footprint no plane covers gets a flat roof at the
   // height the views agree on best, if the verification confirms it.
   bool footprint_flat_roofs = true;
+  // Completion by symmetry (MirroredFaces): a pitched face with a ridge
+  // line proposes the face beyond the ridge, verified like any plane.
+  bool mirror_faces = true;
+  MirrorCompletionOptions mirror;
 };
 
 struct RunStage {

@@ -1,0 +1,89 @@
+#include "algorithms/buildings/mirror_completion.h"
+
+#include <cmath>
+#include <limits>
+
+#include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/polygon2.h"
+
+namespace roofsweep {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// The reflection of p across the plan line through r along unit t.
+Eigen::Vector2d Reflect(const Eigen::Vector2d& p, const Eigen::Vector2d& r,
+                        const Eigen::Vector2d& t) {
+  const Eigen::Vector2d d = p - r;
+  return r + 2 * d.dot(t) * t - d;
+}
+
+}  // namespace
+
+std::vector<RoofPlaneHypothesis> MirroredFaces(const std::vector<RoofPlaneHypothesis>& planes,
+                                               const MirrorCompletionOptions& o) {
+  std::vector<RoofPlaneHypothesis> out;
+  for (const RoofPlaneHypothesis& p : planes) {
+    const Eigen::Vector3d n = p.plane.head<3>();
+    if (p.patch.size() < 3 || n.z() <= 0) continue;
+    const double slope = std::acos(std::min(1.0, n.z()));
+    if (slope < o.min_slope_deg * kDeg || slope > o.max_slope_deg * kDeg) continue;
+    // z = z(r) + g . (x - r) on the plane; g points uphill.
+    const Eigen::Vector2d g = -n.head<2>() / n.z();
+    const Eigen::Vector2d up = g.normalized();
+    const double area = std::abs(SignedArea(p.patch));
+    // The highest level line of the face that has most of its patch below.
+    const std::array<Eigen::Vector2d, 2>* ridge = nullptr;
+    double ridge_at = -std::numeric_limits<double>::infinity();
+    for (const auto& l : p.lines_xy) {
+      const Eigen::Vector2d d = l[1] - l[0];
+      const double len = d.norm();
+      if (len < o.ridge_min_length_m ||
+          std::abs(d.dot(up)) > std::sin(o.ridge_max_angle_deg * kDeg) * len)
+        continue;
+      const double at = 0.5 * (l[0] + l[1]).dot(up);
+      if (at <= ridge_at) continue;
+      // Downhill of the line: x . up <= at.
+      const Ring2 below = ClipHalfPlane(p.patch, up.x(), up.y(), -at);
+      if (below.size() < 3 || std::abs(SignedArea(below)) < o.ridge_min_below * area) continue;
+      ridge = &l;
+      ridge_at = at;
+    }
+    if (!ridge) continue;
+    // The ridge level: the plane's height at the line's middle; the mirror
+    // plane falls from it along -up with the same slope.
+    const Eigen::Vector2d r = 0.5 * ((*ridge)[0] + (*ridge)[1]);
+    const Eigen::Vector2d t(-up.y(), up.x());
+    const double zr = -(n.x() * r.x() + n.y() * r.y() + p.plane[3]) / n.z();
+    const Ring2 below = ClipHalfPlane(p.patch, up.x(), up.y(), -ridge_at);
+    std::vector<Eigen::Vector2d> mirrored;
+    for (const auto& v : below) mirrored.push_back(Reflect(v, r, t));
+    Ring2 patch = ConvexHull(mirrored);
+    if (patch.size() < 3 || std::abs(SignedArea(patch)) < o.min_patch_m2) continue;
+    // Mirror normal: the horizontal part reflected across the ridge's
+    // vertical plane, which (the ridge being level) reverses it.
+    Eigen::Vector3d m(-n.x(), -n.y(), n.z());
+    // Keep the plane exactly through the ridge line at its level.
+    const Eigen::Vector3d on(r.x(), r.y(), zr);
+    bool found = false;
+    for (const RoofPlaneHypothesis& q : planes) {
+      if (q.plane.head<3>().dot(m) < std::cos(o.same_angle_deg * kDeg)) continue;
+      found = found || IntersectionArea(q.patch, patch) >= o.same_cover * SignedArea(patch);
+    }
+    if (found) continue;
+    RoofPlaneHypothesis q;
+    q.plane << m, -m.dot(on);
+    q.patch = std::move(patch);
+    q.score = 0;
+    q.lines = 1;
+    q.longest_line_m = ((*ridge)[1] - (*ridge)[0]).norm();
+    q.similarity = p.similarity;
+    q.lines_xy = {*ridge};
+    q.derived = true;
+    q.id = p.id + " mirrored";
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+}  // namespace roofsweep

@@ -1,0 +1,75 @@
+#include "algorithms/buildings/mirror_completion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "algorithms/buildings/convex_polygon2.h"
+
+namespace roofsweep {
+namespace {
+
+// The south face of a gable 10 m along x: ridge at y = 4, z = 8, falling
+// to the eave at y = 0, z = 6 (26.6 degrees).
+RoofPlaneHypothesis SouthFace() {
+  RoofPlaneHypothesis p;
+  p.id = "south";
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -2, 4).normalized();
+  p.plane << n, -n.dot(Eigen::Vector3d(0, 4, 8));
+  // Its patch runs half a metre past the ridge, as patches do.
+  p.patch = {{0, 0}, {10, 0}, {10, 4.5}, {0, 4.5}};
+  p.lines = 2;
+  p.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 0)},      // eave
+                {Eigen::Vector2d(0.5, 4), Eigen::Vector2d(9.5, 4)}};  // ridge
+  p.score = 10;
+  return p;
+}
+
+double PlaneZ(const RoofPlaneHypothesis& p, double x, double y) {
+  return -(p.plane[0] * x + p.plane[1] * y + p.plane[3]) / p.plane[2];
+}
+
+TEST(MirroredFaces, AFaceWithARidgeProposesTheFaceBeyondIt) {
+  const std::vector<RoofPlaneHypothesis> out = MirroredFaces({SouthFace()});
+  ASSERT_EQ(out.size(), 1u);
+  const RoofPlaneHypothesis& q = out[0];
+  EXPECT_TRUE(q.derived);
+  EXPECT_EQ(q.id, "south mirrored");
+  // The north face: 8 m at the ridge, 6 m at y = 8.
+  EXPECT_NEAR(PlaneZ(q, 3, 4), 8.0, 1e-9);
+  EXPECT_NEAR(PlaneZ(q, 7, 8), 6.0, 1e-9);
+  // Over the south patch below the ridge, reflected: y in [4, 8].
+  EXPECT_NEAR(std::abs(SignedArea(q.patch)), 40.0, 1e-9);
+  for (const auto& v : q.patch) {
+    EXPECT_GE(v.y(), 4 - 1e-9);
+    EXPECT_LE(v.y(), 8 + 1e-9);
+  }
+  ASSERT_EQ(q.lines_xy.size(), 1u);
+  EXPECT_NEAR(q.lines_xy[0][0].y(), 4.0, 1e-12);
+}
+
+TEST(MirroredFaces, NothingWithoutARidgeOrWhereTheOtherFaceIsFound) {
+  RoofPlaneHypothesis eave_only = SouthFace();
+  eave_only.lines_xy.pop_back();
+  EXPECT_TRUE(MirroredFaces({eave_only}).empty());
+
+  // The north face is there already.
+  const std::vector<RoofPlaneHypothesis> north = MirroredFaces({SouthFace()});
+  ASSERT_EQ(north.size(), 1u);
+  RoofPlaneHypothesis found = north[0];
+  found.derived = false;
+  EXPECT_TRUE(MirroredFaces({SouthFace(), found}).empty());
+
+  // A ridge line with most of the patch above it is not the top of the face.
+  RoofPlaneHypothesis low = SouthFace();
+  low.lines_xy[1] = {Eigen::Vector2d(0.5, 1), Eigen::Vector2d(9.5, 1)};
+  EXPECT_TRUE(MirroredFaces({low}).empty());
+
+  // Flat roofs and walls are not mirrored.
+  RoofPlaneHypothesis flat = SouthFace();
+  flat.plane << 0, 0, 1, -6;
+  EXPECT_TRUE(MirroredFaces({flat}).empty());
+}
+
+}  // namespace
+}  // namespace roofsweep
