@@ -58,10 +58,6 @@ std::pair<double, double> LineInterval(const Ring2& ring, const Eigen::Vector2d&
   return {t0, t1};
 }
 
-}  // namespace
-
-namespace {
-
 // The plan-view line x + t d where planes p and q meet, when each patch
 // lies on its own side of it with at most max_across of its area on the
 // other's: the two are faces that border each other there (a ridge, a
