@@ -105,6 +105,36 @@ bool LineAlong(const MeetLine& m, const std::vector<std::array<Eigen::Vector2d, 
   return false;
 }
 
+// The class a plane competes in: found planes whose height the images
+// confirmed, then found planes placed by their lines, then derived ones.
+int ConflictClass(const RoofPlaneHypothesis& p) { return 2 * p.derived + p.height_from_lines; }
+
+// True when the patches of p and q overlap by more than max_overlap of the
+// smaller one and the two are not faces that meet (see GroupingOptions);
+// `overlap` is that fraction.
+bool InConflict(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
+                const GroupingOptions& o, double* overlap) {
+  const Ring2 inter = IntersectConvex(p.patch, q.patch);
+  if (inter.empty()) return false;
+  const double f =
+      std::abs(SignedArea(inter)) /
+      std::max(1e-9, std::min(std::abs(SignedArea(p.patch)), std::abs(SignedArea(q.patch))));
+  if (f <= o.max_overlap) return false;
+  // Two faces whose patches spill over the line where they meet (both
+  // faces of a gable past its ridge) overlap without competing, when a 3D
+  // line of each runs along that line: the border was seen.
+  if (o.conflict_meet_max_across > 0 && f <= o.conflict_meet_max_overlap) {
+    const auto meet = BorderBetween(p.plane, p.patch, q.plane, q.patch, o.virtual_min_angle_deg,
+                                    o.conflict_meet_max_across);
+    if (meet &&
+        LineAlong(*meet, p.lines_xy, o.conflict_meet_line_offset_m, o.virtual_min_length_m) &&
+        LineAlong(*meet, q.lines_xy, o.conflict_meet_line_offset_m, o.virtual_min_length_m))
+      return false;
+  }
+  *overlap = f;
+  return true;
+}
+
 }  // namespace
 
 bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& o) {
@@ -202,53 +232,103 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           const GroupingOptions& o) {
   std::vector<RoofPlaneHypothesis>& p = *planes;
-  std::vector<int> by_score(p.size());
+  const int n = static_cast<int>(p.size());
+  std::vector<int> by_score(n);
   std::iota(by_score.begin(), by_score.end(), 0);
   std::stable_sort(by_score.begin(), by_score.end(), [&](int a, int b) {
-    if (p[a].derived != p[b].derived) return !p[a].derived;
-    if (p[a].height_from_lines != p[b].height_from_lines) return !p[a].height_from_lines;
+    if (ConflictClass(p[a]) != ConflictClass(p[b]))
+      return ConflictClass(p[a]) < ConflictClass(p[b]);
     return p[a].score > p[b].score;
   });
-  std::vector<std::string> rejected;
-  std::vector<int> kept;
+  // Only neighbours can conflict: boxes first (a city tile holds thousands
+  // of planes).
+  std::vector<Eigen::Vector4d> box(n);
+  for (int i = 0; i < n; ++i) box[i] = RingBounds(p[i].patch);
+  auto conflict = [&](int a, int b, double* f) {
+    return BoundsMeet(box[a], box[b]) && InConflict(p[a], p[b], o, f);
+  };
+
+  std::vector<char> in(n, 0);
+  std::vector<std::string> reason(n);
   for (int k : by_score) {
-    const double area = std::abs(SignedArea(p[k].patch));
-    int conflict = -1;
+    int with = -1;
     double overlap = 0;
-    for (int j : kept) {
-      const Ring2 inter = IntersectConvex(p[k].patch, p[j].patch);
-      if (inter.empty()) continue;
-      const double f = std::abs(SignedArea(inter)) /
-                       std::max(1e-9, std::min(area, std::abs(SignedArea(p[j].patch))));
-      if (f <= o.max_overlap) continue;
-      // Two faces whose patches spill over the line where they meet (both
-      // faces of a gable past its ridge) overlap without competing, when a
-      // 3D line of each runs along that line: the border was seen.
-      if (o.conflict_meet_max_across > 0 && f <= o.conflict_meet_max_overlap) {
-        const auto meet = BorderBetween(p[k].plane, p[k].patch, p[j].plane, p[j].patch,
-                                        o.virtual_min_angle_deg, o.conflict_meet_max_across);
-        if (meet &&
-            LineAlong(*meet, p[k].lines_xy, o.conflict_meet_line_offset_m,
-                      o.virtual_min_length_m) &&
-            LineAlong(*meet, p[j].lines_xy, o.conflict_meet_line_offset_m, o.virtual_min_length_m))
-          continue;
+    for (int j : by_score) {
+      if (j == k) break;  // only stronger planes were decided
+      if (in[j] && conflict(k, j, &overlap)) {
+        with = j;
+        break;
       }
-      conflict = j;
-      overlap = f;
-      break;
     }
-    if (conflict >= 0) {
-      char buf[300];
-      std::snprintf(buf, sizeof buf, "%s: overlaps the stronger %s by %.0f %% in plan view",
-                    p[k].id.c_str(), p[conflict].id.c_str(), 100 * overlap);
-      rejected.push_back(buf);
+    if (with < 0) {
+      in[k] = 1;
       continue;
     }
-    kept.push_back(k);
+    char buf[300];
+    std::snprintf(buf, sizeof buf, "%s: overlaps the stronger %s by %.0f %% in plan view",
+                  p[k].id.c_str(), p[with].id.c_str(), 100 * overlap);
+    reason[k] = buf;
   }
-  std::sort(kept.begin(), kept.end());
+
+  // One strong plane against several: the greedy order compares pairs, so
+  // a plane carried over two neighbouring faces (the north faces of two
+  // terraced houses whose ridges differ by a metre) beats each by its
+  // area, though each fits the images better. Where such rejected planes
+  // conflict with no kept plane but that one, do not conflict with each
+  // other, each fit the images clearly better (conflict_replace_min_gain
+  // higher verified similarity), have min_lines lines and
+  // one of conflict_replace_min_line_m, and together hold more
+  // evidence (score) than it, they replace it: a local improvement of the
+  // kept set's total evidence, so it ends.
+  for (bool changed = o.conflict_replace_by_several; changed;) {
+    changed = false;
+    for (int big : by_score) {
+      if (!in[big]) continue;
+      std::vector<int> chosen;
+      double sum = 0;
+      for (int q : by_score) {
+        // Faces, not fragments: small planes of one short line fit a few
+        // samples well, and together outweighed a flat roof (realistic
+        // s17); the assembly would drop them afterwards.
+        if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) ||
+            !(p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain) ||
+            p[q].lines < o.min_lines || p[q].longest_line_m < o.conflict_replace_min_line_m)
+          continue;
+        double f = 0;
+        if (!conflict(q, big, &f)) continue;
+        bool free = true;
+        for (int j = 0; j < n && free; ++j)
+          if (in[j] && j != big && conflict(q, j, &f)) free = false;
+        for (int c : chosen)
+          if (free && conflict(q, c, &f)) free = false;
+        if (!free) continue;
+        chosen.push_back(q);
+        sum += p[q].score;
+      }
+      if (chosen.size() < 2 || !(sum > p[big].score)) continue;
+      std::string names;
+      for (int q : chosen) {
+        in[q] = 1;
+        reason[q].clear();
+        names += (names.empty() ? "" : ", ") + p[q].id;
+      }
+      in[big] = 0;
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    ": overlaps %zu planes that each fit the images better and together hold "
+                    "more evidence (%.1f against %.1f): ",
+                    chosen.size(), sum, p[big].score);
+      reason[big] = p[big].id + buf + names;
+      changed = true;
+    }
+  }
+
+  std::vector<std::string> rejected;
+  for (int k : by_score)
+    if (!in[k]) rejected.push_back(reason[k]);
   std::vector<RoofPlaneHypothesis> out;
-  for (int k : kept) out.push_back(std::move(p[k]));
+  for (int k = 0; k < n; ++k)
+    if (in[k]) out.push_back(std::move(p[k]));
   p = std::move(out);
   return rejected;
 }

@@ -38,6 +38,19 @@ struct GroupingOptions {
   double conflict_meet_max_across = 0.45;
   double conflict_meet_max_overlap = 0.7;
   double conflict_meet_line_offset_m = 0.5;
+  // A kept plane gives way to rejected planes that overlap it when they
+  // conflict with no other kept plane nor with each other, each has a
+  // verified similarity higher by conflict_replace_min_gain (a clear
+  // preference, as VerifyOptions::min_margin; nearly coplanar pieces of one
+  // terraced row's face are not), and together they hold more evidence
+  // (score): one plane carried over the faces of two terraced houses whose
+  // ridges differ by a metre beats each face by its area alone. Each of
+  // them must have min_lines lines, one at least conflict_replace_min_line_m
+  // long: faces that stand on their own, not fragments of one (as
+  // AssemblyOptions::min_line_length_m).
+  bool conflict_replace_by_several = true;
+  double conflict_replace_min_gain = 0.1;
+  double conflict_replace_min_line_m = 3.0;
   // §5: "at least two lines (one of them can be virtual) are required to
   // accept a plane", an efficient culling of erroneous one-line half-planes
   // (tree crowns, shadows). Applied by DropWeaklySupported after the
@@ -86,7 +99,9 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 // after those the images confirmed, derived planes after all found ones),
 // a plane whose patch overlaps a kept one's by more than max_overlap
 // is dropped, unless the two meet along a line that parts their patches
-// (conflict_meet_max_across). Returns the reasons.
+// (conflict_meet_max_across); then a kept plane that several of the
+// dropped ones explain better together is replaced by them
+// (conflict_replace_by_several). Returns the reasons.
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           const GroupingOptions& options);
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/sweep/half_plane_family.h"
@@ -222,6 +223,100 @@ TEST(PlaneGrouping, TheTwoFacesOfAGableMeetAtTheRidgeInsteadOfConflicting) {
   planes = {south, astray};
   ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
   EXPECT_EQ(planes[0].id, "south");
+}
+
+TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
+  // Two terraced houses, 7 and 8 m wide, whose north faces (36.9 deg) have
+  // ridges 1.2 m apart in height; one plane carried over both beats each
+  // face alone by its area, though each face fits the images better.
+  const Eigen::Vector3d north = Eigen::Vector3d(0, 3, 4).normalized();
+  auto with_similarity = [](RoofPlaneHypothesis h, double sim, int lines = 3,
+                            double longest_line_m = 7) {
+    h.similarity = sim;
+    h.score *= sim;
+    h.lines = lines;
+    h.longest_line_m = longest_line_m;
+    return h;
+  };
+  const RoofPlaneHypothesis west =
+      with_similarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.93);
+  const RoofPlaneHypothesis east =
+      with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89);
+  const RoofPlaneHypothesis across =
+      with_similarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 15 * 5.6), 0.74);
+  std::vector<RoofPlaneHypothesis> planes = {across, west, east};
+  std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "west");
+  EXPECT_EQ(planes[1].id, "east");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind("across: overlaps 2 planes that each fit the images better", 0), 0u)
+      << rejected[0];
+  EXPECT_NE(rejected[0].find("west"), std::string::npos);
+  EXPECT_NE(rejected[0].find("east"), std::string::npos);
+
+  // Without the rule, the pairwise order keeps the large plane.
+  GroupingOptions off;
+  off.conflict_replace_by_several = false;
+  planes = {across, west, east};
+  rejected = ResolveConflicts(&planes, off);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "across");
+  EXPECT_EQ(rejected.size(), 2u);
+
+  // A face that fits the images worse than the large plane does not count
+  // towards replacing it, and one face alone never does.
+  planes = {across, west,
+            with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.70)};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  EXPECT_EQ(planes[0].id, "across");
+
+  // Nor do faces that fit the images only a little better: pieces of one
+  // face seen as two.
+  planes = {across, with_similarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.8),
+            with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.8)};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  EXPECT_EQ(planes[0].id, "across");
+
+  // Nor do planes of one line (the grouping's minimum is two) ...
+  planes = {across, west,
+            with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89, 1)};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  EXPECT_EQ(planes[0].id, "across");
+
+  // ... nor fragments: five small planes of short lines that fit a few
+  // samples well outweigh the large plane together.
+  planes = {across};
+  for (int i = 0; i < 5; ++i)
+    planes.push_back(with_similarity(
+        Face("piece " + std::to_string(i), north, {0, 0, 8.6}, 3 * i, 0, 3 * i + 3, 5.6, 40), 0.9,
+        2, 2.5));
+  const std::vector<RoofPlaneHypothesis> pieces = planes;
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 5u);
+  EXPECT_EQ(planes[0].id, "across");
+  GroupingOptions short_lines;
+  short_lines.conflict_replace_min_line_m = 2.5;
+  planes = pieces;
+  EXPECT_EQ(ResolveConflicts(&planes, short_lines).size(), 1u);
+  EXPECT_EQ(planes.size(), 5u);
+
+  // Nor do faces whose evidence together is less than the large plane's.
+  const RoofPlaneHypothesis big_across =
+      with_similarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 2.0 * 15 * 5.6), 0.74);
+  planes = {big_across, west, east};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  EXPECT_EQ(planes[0].id, "across");
+
+  // Nor a face that also conflicts with another kept plane: a stronger
+  // plane over the east house's place keeps it out, and the west face
+  // alone does not replace the large plane.
+  const RoofPlaneHypothesis other =
+      with_similarity(Face("other", north, {0, 0, 8.0}, 10, 0, 20, 5.6, 1000), 0.95);
+  planes = {across, west, east, other};
+  rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "across");
+  EXPECT_EQ(planes[1].id, "other");
 }
 
 TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
