@@ -289,7 +289,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       for (int q : by_score) {
         // Faces, not fragments: small planes of one short line fit a few
         // samples well, and together outweighed a flat roof (realistic
-        // s17); the assembly would drop them afterwards.
+        // s17); later stages drop them.
         if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) ||
             !(p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain) ||
             p[q].lines < o.min_lines || p[q].longest_line_m < o.conflict_replace_min_line_m)
