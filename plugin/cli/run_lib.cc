@@ -421,20 +421,29 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     roof_planes = std::move(verified);
   }
 
+  // Every completion step below proposes planes that are verified like
+  // the sweep's own, then settled in the conflicts with those kept so far;
+  // returns how many the verification confirmed.
+  auto add_verified = [&](std::vector<RoofPlaneHypothesis> proposals) {
+    SubProgress none(progress, 0.99, 0.99);
+    const std::vector<PlaneVerification> checks =
+        VerifyPlanes(block, images, proposals, r.verify, none);
+    const size_t before = roof_planes.size();
+    KeepVerified(std::move(proposals), checks, &roof_planes, &out.rejected, trace);
+    const size_t confirmed = roof_planes.size() - before;
+    const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
+    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    return confirmed;
+  };
+
   // Completion by symmetry: the face beyond each ridge the sweep found
   // from one side only, verified like the others; derived, so it yields
   // in conflicts to every plane found directly.
   if (r.mirror_faces) {
     t0 = Clock::now();
     std::vector<RoofPlaneHypothesis> mirrored = MirroredFaces(roof_planes, r.mirror);
-    const size_t proposed = mirrored.size(), before = roof_planes.size();
-    SubProgress none(progress, 0.99, 0.99);
-    const std::vector<PlaneVerification> checks =
-        VerifyPlanes(block, images, mirrored, r.verify, none);
-    KeepVerified(std::move(mirrored), checks, &roof_planes, &out.rejected, trace);
-    const size_t confirmed = roof_planes.size() - before;
-    const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
-    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    const size_t proposed = mirrored.size();
+    const size_t confirmed = add_verified(std::move(mirrored));
     out.stages.push_back(
         {"mirrored faces",
          StrFormat("%zu faces beyond a ridge proposed, %zu confirmed", proposed, confirmed),
@@ -456,14 +465,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         if (tried.insert(q.id).second) extra.push_back(std::move(q));
       if (extra.empty()) break;
       proposed += static_cast<int>(extra.size());
-      SubProgress none(progress, 0.99, 0.99);
-      const std::vector<PlaneVerification> checks =
-          VerifyPlanes(block, images, extra, r.verify, none);
-      const size_t before = roof_planes.size();
-      KeepVerified(std::move(extra), checks, &roof_planes, &out.rejected, trace);
-      const int now = static_cast<int>(roof_planes.size() - before);
-      const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
-      out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+      const int now = static_cast<int>(add_verified(std::move(extra)));
       confirmed += now;
       if (now == 0) break;
     }
@@ -498,13 +500,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<RoofPlaneHypothesis> flat;
     for (size_t k = 0; k < which.size(); ++k)
       if (std::isfinite(z[k])) flat.push_back(FlatRoofOver(footprints[which[k]], z[k]));
-    const size_t proposed = flat.size(), before = roof_planes.size();
-    SubProgress none(progress, 0.99, 0.99);
-    const std::vector<PlaneVerification> checks = VerifyPlanes(block, images, flat, r.verify, none);
-    KeepVerified(std::move(flat), checks, &roof_planes, &out.rejected, trace);
-    const size_t confirmed = roof_planes.size() - before;
-    const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
-    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    const size_t proposed = flat.size();
+    const size_t confirmed = add_verified(std::move(flat));
     out.stages.push_back(
         {"flat roofs over bare footprints",
          StrFormat("%zu of %zu footprints without a plane: %zu proposed, %zu confirmed",
