@@ -264,10 +264,8 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       in[k] = 1;
       continue;
     }
-    char buf[300];
-    std::snprintf(buf, sizeof buf, "%s: overlaps the stronger %s by %.0f %% in plan view",
-                  p[k].id.c_str(), p[with].id.c_str(), 100 * overlap);
-    reason[k] = buf;
+    reason[k] = StrFormat("%s: overlaps the stronger %s by %.0f %% in plan view", p[k].id.c_str(),
+                          p[with].id.c_str(), 100 * overlap);
   }
 
   // One strong plane against several: the greedy order compares pairs, so
@@ -296,11 +294,10 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
           continue;
         double f = 0;
         if (!conflict(q, big, &f)) continue;
+        auto clashes = [&](int j) { return j != big && j != q && conflict(q, j, &f); };
         bool free = true;
-        for (int j = 0; j < n && free; ++j)
-          if (in[j] && j != big && conflict(q, j, &f)) free = false;
-        for (int c : chosen)
-          if (free && conflict(q, c, &f)) free = false;
+        for (int j = 0; j < n && free; ++j) free = !(in[j] && clashes(j));
+        for (size_t c = 0; c < chosen.size() && free; ++c) free = !clashes(chosen[c]);
         if (!free) continue;
         chosen.push_back(q);
         sum += p[q].score;
@@ -313,12 +310,10 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         names += (names.empty() ? "" : ", ") + p[q].id;
       }
       in[big] = 0;
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    ": overlaps %zu planes that each fit the images better and together hold "
-                    "more evidence (%.1f against %.1f): ",
-                    chosen.size(), sum, p[big].score);
-      reason[big] = p[big].id + buf + names;
+      reason[big] = StrFormat(
+          "%s: overlaps %zu planes that each fit the images better and together hold more "
+          "evidence (%.1f against %.1f): %s",
+          p[big].id.c_str(), chosen.size(), sum, p[big].score, names.c_str());
       changed = true;
     }
   }
