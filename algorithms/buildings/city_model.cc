@@ -79,20 +79,53 @@ double Polygon3::Area() const {
 
 double Building::GroundZ() const {
   double z = std::numeric_limits<double>::infinity();
-  for (const auto& s : surfaces)
-    if (s.type == SurfaceType::kGround)
-      for (const auto& p : s.polygons)
-        for (const auto& v : p.exterior) z = std::min(z, v.z());
+  for (const Building* b : Solids())
+    for (const auto& s : b->surfaces)
+      if (s.type == SurfaceType::kGround)
+        for (const auto& p : s.polygons)
+          for (const auto& v : p.exterior) z = std::min(z, v.z());
   return std::isinf(z) ? std::numeric_limits<double>::quiet_NaN() : z;
 }
 
 double Building::RoofTopZ() const {
   double z = -std::numeric_limits<double>::infinity();
-  for (const auto& s : surfaces)
-    if (s.type == SurfaceType::kRoof)
-      for (const auto& p : s.polygons)
-        for (const auto& v : p.exterior) z = std::max(z, v.z());
+  for (const Building* b : Solids())
+    for (const auto& s : b->surfaces)
+      if (s.type == SurfaceType::kRoof)
+        for (const auto& p : s.polygons)
+          for (const auto& v : p.exterior) z = std::max(z, v.z());
   return std::isinf(z) ? std::numeric_limits<double>::quiet_NaN() : z;
+}
+
+std::vector<const Building*> Building::Solids() const {
+  std::vector<const Building*> out;
+  if (!surfaces.empty()) out.push_back(this);
+  for (const Building& p : parts) {
+    const std::vector<const Building*> sub = p.Solids();
+    out.insert(out.end(), sub.begin(), sub.end());
+  }
+  return out;
+}
+
+std::vector<Building*> Building::Solids() {
+  std::vector<Building*> out;
+  for (const Building* b : static_cast<const Building*>(this)->Solids())
+    out.push_back(const_cast<Building*>(b));
+  return out;
+}
+
+namespace {
+void MergeParts(Building* b) {
+  for (Building& p : b->parts) {
+    MergeParts(&p);
+    for (Surface& s : p.surfaces) b->surfaces.push_back(std::move(s));
+  }
+  b->parts.clear();
+}
+}  // namespace
+
+void MergeBuildingParts(CityModel* model) {
+  for (Building& b : model->buildings) MergeParts(&b);
 }
 
 Eigen::Matrix<double, 6, 1> CityModel::Bounds() const {
@@ -100,12 +133,13 @@ Eigen::Matrix<double, 6, 1> CityModel::Bounds() const {
   Eigen::Matrix<double, 6, 1> b;
   b << inf, inf, inf, -inf, -inf, -inf;
   for (const auto& bl : buildings)
-    for (const auto& s : bl.surfaces)
-      for (const auto& p : s.polygons)
-        for (const auto& v : p.exterior) {
-          b.head<3>() = b.head<3>().cwiseMin(v);
-          b.tail<3>() = b.tail<3>().cwiseMax(v);
-        }
+    for (const Building* solid : bl.Solids())
+      for (const auto& s : solid->surfaces)
+        for (const auto& p : s.polygons)
+          for (const auto& v : p.exterior) {
+            b.head<3>() = b.head<3>().cwiseMin(v);
+            b.tail<3>() = b.tail<3>().cwiseMax(v);
+          }
   return b;
 }
 

@@ -63,10 +63,22 @@ struct Building {
   // CityGML, attributes in CityJSON and fields in GeoPackage.
   std::map<std::string, double> double_attributes;
   std::map<std::string, std::string> string_attributes;
+  // Building parts (CityGML bldg:consistsOfBuildingPart, CityJSON
+  // BuildingPart children), each a solid with its own roof type and height:
+  // one cadastral building whose wings or terraced units stand at different
+  // heights. A building with parts carries the attributes that hold for the
+  // whole (its footprint's id) and, in roofsweep's output, no surfaces of
+  // its own; a model read from elsewhere may have both.
+  std::vector<Building> parts;
 
-  // Lowest ground z and highest roof z (NaN when there are none).
+  // Lowest ground z and highest roof z, over the parts too (NaN when there
+  // are none).
   double GroundZ() const;
   double RoofTopZ() const;
+  // The objects that carry geometry: this building when it has surfaces,
+  // then its parts (depth first). What solid checks and counts go over.
+  std::vector<const Building*> Solids() const;
+  std::vector<Building*> Solids();
 };
 
 // A set of buildings in one coordinate system: the block CRS when written
@@ -86,13 +98,19 @@ struct CityModel {
     static_assert(std::is_same_v<std::invoke_result_t<F&, const Eigen::Vector3d&>, Eigen::Vector3d>,
                   "TransformVertices: f must return Eigen::Vector3d (declare -> Eigen::Vector3d)");
     for (Building& b : buildings)
-      for (Surface& s : b.surfaces)
-        for (Polygon3& p : s.polygons) {
-          for (auto& v : p.exterior) v = f(v);
-          for (auto& h : p.holes)
-            for (auto& v : h) v = f(v);
-        }
+      for (Building* solid : b.Solids())
+        for (Surface& s : solid->surfaces)
+          for (Polygon3& p : s.polygons) {
+            for (auto& v : p.exterior) v = f(v);
+            for (auto& h : p.holes)
+              for (auto& v : h) v = f(v);
+          }
   }
 };
+
+// Moves every part's surfaces into its building and drops the parts: one
+// object per building, as the evaluation compares them (a reference
+// building modelled as parts is one building to find, and so is ours).
+void MergeBuildingParts(CityModel* model);
 
 }  // namespace roofsweep

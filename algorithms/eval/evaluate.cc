@@ -335,6 +335,16 @@ void ScoreBuildings(const CityModel& result, const CityModel& truth, const EvalO
 EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
                     const std::vector<Segment3>* lines,
                     const std::vector<Segment3>* extra_reference_segments) {
+  auto has_parts = [](const CityModel& m) {
+    return std::any_of(m.buildings.begin(), m.buildings.end(),
+                       [](const Building& b) { return !b.parts.empty(); });
+  };
+  if (has_parts(result) || has_parts(truth)) {
+    CityModel r = result, t = truth;
+    MergeBuildingParts(&r);
+    MergeBuildingParts(&t);
+    return Evaluate(r, t, options, lines, extra_reference_segments);
+  }
   CheckOptions(options);
   EvalResult out;
   out.options = options;

@@ -147,6 +147,9 @@ struct EvalResult {
 
 // `lines`: reconstructed 3D segments (optional). `extra_reference_segments`:
 // reference segments besides the roof edges, e.g. ground markings (optional).
+// A building made of parts counts as one building, its parts' surfaces
+// together (MergeBuildingParts): the reference models buildings so, and a
+// footprint's building is one cadastral object however many solids it has.
 // Throws roofsweep::Error for options out of range.
 EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
                     const std::vector<Segment3>* lines = nullptr,

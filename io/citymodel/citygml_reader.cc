@@ -96,7 +96,7 @@ bool SurfaceTypeOf(COT t, SurfaceType* out) {
   }
 }
 
-// Thematic surfaces of `obj` and of its BuildingParts, appended to `b`.
+// Thematic surfaces of `obj` (not of its BuildingParts), appended to `b`.
 // Returns the number of surfaces found.
 int AddThematicSurfaces(const citygml::CityObject& obj, Building* b) {
   int n = 0;
@@ -110,8 +110,6 @@ int AddThematicSurfaces(const citygml::CityObject& obj, Building* b) {
       for (unsigned g = 0; g < child.getGeometriesCount(); ++g)
         CollectPolygons(child.getGeometry(g), &s.polygons);
       if (!s.polygons.empty()) b->surfaces.push_back(std::move(s)), ++n;
-    } else if (child.getType() == COT::COT_BuildingPart) {
-      n += AddThematicSurfaces(child, b);
     }
   }
   return n;
@@ -130,9 +128,6 @@ void AddUnclassifiedSurfaces(const citygml::CityObject& obj, Building* b) {
     s.polygons.push_back(std::move(p));
     b->surfaces.push_back(std::move(s));
   }
-  for (unsigned i = 0; i < obj.getChildCityObjectsCount(); ++i)
-    if (obj.getChildCityObject(i).getType() == COT::COT_BuildingPart)
-      AddUnclassifiedSurfaces(obj.getChildCityObject(i), b);
 }
 
 void ReadAttributes(const citygml::CityObject& obj, Building* b) {
@@ -149,6 +144,18 @@ void ReadAttributes(const citygml::CityObject& obj, Building* b) {
         b->string_attributes[key] = value.asString();
     }
   }
+}
+
+// A Building or BuildingPart with its parts (nested as in the file).
+Building ReadBuildingObject(const citygml::CityObject& obj) {
+  Building b;
+  b.id = obj.getId();
+  ReadAttributes(obj, &b);
+  if (AddThematicSurfaces(obj, &b) == 0) AddUnclassifiedSurfaces(obj, &b);
+  for (unsigned i = 0; i < obj.getChildCityObjectsCount(); ++i)
+    if (obj.getChildCityObject(i).getType() == COT::COT_BuildingPart)
+      b.parts.push_back(ReadBuildingObject(obj.getChildCityObject(i)));
+  return b;
 }
 
 // Cheap pre-check so that "not CityGML" gets a clear message instead of an
@@ -202,14 +209,10 @@ CityModel ReadCityGml(const std::string& path) {
   if (srs.empty()) srs = m->getSRSName();
   for (const citygml::CityObject* obj : m->getRootCityObjects()) {
     if (!obj || obj->getType() != COT::COT_Building) continue;
-    Building b;
-    b.id = obj->getId();
-    ReadAttributes(*obj, &b);
     if (srs.empty()) srs = obj->getEnvelope().srsName();
     for (unsigned g = 0; srs.empty() && g < obj->getGeometriesCount(); ++g)
       srs = obj->getGeometry(g).getSRSName();
-    if (AddThematicSurfaces(*obj, &b) == 0) AddUnclassifiedSurfaces(*obj, &b);
-    out.buildings.push_back(std::move(b));
+    out.buildings.push_back(ReadBuildingObject(*obj));
   }
   out.crs = NormalizeCrsName(srs);
   return out;

@@ -11,8 +11,8 @@ namespace roofsweep {
 // (Roof/Wall/Ground/ClosureSurface, with OuterCeiling/OuterFloor mapped to
 // Roof/Ground) become Surfaces; a building that only has a lod2Solid or
 // lod2MultiSurface gets its polygons classified by their normal (up: roof,
-// down: ground, else wall). BuildingParts are flattened into their
-// Building. The closing duplicate vertex of each ring is dropped. The CRS is
+// down: ground, else wall). BuildingParts become the Building's parts,
+// nested as in the file. The closing duplicate vertex of each ring is dropped. The CRS is
 // the envelope's srsName (model, else first building, else first geometry),
 // normalised to "EPSG:NNNN".
 //

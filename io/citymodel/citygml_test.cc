@@ -154,14 +154,27 @@ TEST(CityGml, ReadsBerlinTileWithCrsFromUrn) {
   EXPECT_EQ(m.crs, "EPSG:25833");
 }
 
-TEST(CityGml, BuildingPartsAreFlattenedIntoTheirBuilding) {
+TEST(CityGml, BuildingPartsAreReadAsPartsAndMergeOnRequest) {
   ROOFSWEEP_SHARED_PATH_OR_SKIP(path, "data/citygml/berlin-lod2/3910_5817.gml");
-  const CityModel m = ReadCityGml(path);
+  CityModel m = ReadCityGml(path);
   EXPECT_EQ(m.buildings.size(), 166u);
-  int roofs = 0;
-  for (const auto& b : m.buildings)
-    for (const auto& s : b.surfaces) roofs += s.type == SurfaceType::kRoof;
+  int roofs = 0, own_roofs = 0, parts = 0;
+  for (const auto& b : m.buildings) {
+    parts += static_cast<int>(b.parts.size());
+    for (const Building* solid : b.Solids())
+      for (const auto& s : solid->surfaces) roofs += s.type == SurfaceType::kRoof;
+    for (const auto& s : b.surfaces) own_roofs += s.type == SurfaceType::kRoof;
+  }
   EXPECT_EQ(roofs, 387);  // PROVENANCE.md's count, which includes the parts' roofs
+  EXPECT_LT(own_roofs, roofs);
+  EXPECT_EQ(parts, 15);  // the file's bldg:BuildingPart elements
+  MergeBuildingParts(&m);
+  int merged = 0;
+  for (const auto& b : m.buildings) {
+    EXPECT_TRUE(b.parts.empty());
+    for (const auto& s : b.surfaces) merged += s.type == SurfaceType::kRoof;
+  }
+  EXPECT_EQ(merged, 387);
 }
 
 TEST(CityGml, ReadsCityGml10) {

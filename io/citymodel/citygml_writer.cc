@@ -112,9 +112,16 @@ void CityGmlWriter::Begin(const std::string& crs, const Envelope3& envelope) {
 
 void CityGmlWriter::Write(const Building& b) {
   if (!writer_) throw Error(AtLine(file_.path(), 0, "CityGmlWriter::Write before Begin"));
-  const std::string bid = UniqueId(b.id, "BLDG_" + std::to_string(++buildings_));
   xmlTextWriterStartElement(writer_, X("core:cityObjectMember"));
-  xmlTextWriterStartElement(writer_, X("bldg:Building"));
+  WriteObject(b, "bldg:Building", "BLDG_" + std::to_string(++buildings_));
+  // One return code per building catches a full disk without checking every call.
+  Check(xmlTextWriterEndElement(writer_), "cityObjectMember");
+}
+
+void CityGmlWriter::WriteObject(const Building& b, const char* element,
+                                const std::string& fallback_id) {
+  const std::string bid = UniqueId(b.id, fallback_id);
+  xmlTextWriterStartElement(writer_, X(element));
   xmlTextWriterWriteAttribute(writer_, X("gml:id"), X(bid.c_str()));
 
   // gen:* come before roofType in the XSD's sequence (core's generic
@@ -218,9 +225,13 @@ void CityGmlWriter::Write(const Building& b) {
     xmlTextWriterEndElement(writer_);  // *Surface
     xmlTextWriterEndElement(writer_);  // boundedBy
   }
-  xmlTextWriterEndElement(writer_);  // Building
-  // One return code per building catches a full disk without checking every call.
-  Check(xmlTextWriterEndElement(writer_), "cityObjectMember");
+  // The XSD's sequence puts the parts after boundedBy (and before address).
+  for (size_t k = 0; k < b.parts.size(); ++k) {
+    xmlTextWriterStartElement(writer_, X("bldg:consistsOfBuildingPart"));
+    WriteObject(b.parts[k], "bldg:BuildingPart", bid + "_part_" + std::to_string(k + 1));
+    xmlTextWriterEndElement(writer_);
+  }
+  xmlTextWriterEndElement(writer_);  // Building or BuildingPart
 }
 
 void CityGmlWriter::End() {

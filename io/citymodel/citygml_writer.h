@@ -16,8 +16,9 @@ namespace roofsweep {
 // docs/ecosystem-notes §2). Each building becomes a bldg:Building with
 // gen:* attributes, roofType (SIG3D codeSpace), measuredHeight, a lod2Solid
 // whose surfaceMembers reference the thematic surfaces' polygons by xlink,
-// and bldg:boundedBy Roof/Wall/Ground/ClosureSurface. Output validates
-// against CityGML-2.0-all.xsd.
+// and bldg:boundedBy Roof/Wall/Ground/ClosureSurface; its parts follow as
+// bldg:consistsOfBuildingPart/bldg:BuildingPart, each written the same way.
+// Output validates against CityGML-2.0-all.xsd.
 class CityGmlWriter final : public CityModelStreamWriter {
  public:
   // Throws roofsweep::Error for a missing folder or an existing output
@@ -30,6 +31,8 @@ class CityGmlWriter final : public CityModelStreamWriter {
   void End() override;
 
  private:
+  // A Building or BuildingPart (`element`) with its parts.
+  void WriteObject(const Building& b, const char* element, const std::string& fallback_id);
   std::string UniqueId(const std::string& wanted, const std::string& fallback);
   bool Taken(const std::string& id) const;
   void Check(int rc, const char* what);

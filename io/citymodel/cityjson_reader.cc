@@ -1,10 +1,12 @@
 #include "io/citymodel/cityjson_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "algorithms/core/error.h"
 #include "io/citymodel/crs_name.h"
@@ -218,47 +220,67 @@ class BuildingReader {
   const Context& ctx_;
 };
 
-// Adds the Buildings (and BuildingParts, merged into their parents) of one
-// CityObjects member to `model`. `index` maps building ids to positions.
+// Adds the Buildings of one CityObjects member, with their BuildingParts
+// (nested as the "parents" links say), to `model`.
 void ReadCityObjects(const json& doc, const std::vector<Eigen::Vector3d>& vertices,
-                     const Context& ctx, CityModel* model, std::map<std::string, size_t>* index) {
+                     const Context& ctx, CityModel* model) {
   if (!doc.contains("CityObjects") || !doc["CityObjects"].is_object())
     ctx.Fail("/CityObjects", "missing or not an object");
   BuildingReader reader(vertices, ctx);
   const json& objs = doc["CityObjects"];
-  std::vector<std::pair<std::string, const json*>> parts;
+  // Parts may be listed before their parent: collect every object first,
+  // then hang each part under its parent, deepest parts first.
+  std::map<std::string, Building> read;
+  std::map<std::string, std::string> parent_of;
+  std::map<std::string, int> seq;  // file order
+  std::vector<std::string> roots;
   for (const auto& [id, obj] : objs.items()) {
     const std::string ptr = "/CityObjects/" + id;
     if (!obj.is_object() || !obj.contains("type") || !obj["type"].is_string())
       ctx.Fail(ptr, "city object without a type");
     const std::string type = obj["type"].get<std::string>();
-    if (type == "BuildingPart") {
-      parts.emplace_back(id, &obj);
-      continue;
-    }
-    if (type != "Building") continue;
+    if (type != "Building" && type != "BuildingPart") continue;
     Building b;
     b.id = id;
     reader.ReadAttributes(obj, ptr, &b);
     reader.ReadGeometry(obj, ptr, &b);
-    (*index)[id] = model->buildings.size();
-    model->buildings.push_back(std::move(b));
-  }
-  // Parts may be listed before their parent, so they are resolved after.
-  for (const auto& [id, obj] : parts) {
-    const std::string ptr = "/CityObjects/" + id;
-    std::string parent;
-    if (obj->contains("parents") && (*obj)["parents"].is_array() && !(*obj)["parents"].empty())
-      parent = (*obj)["parents"][0].get<std::string>();
-    // Nested parts point at a part; follow them up to the building.
-    for (int guard = 0; guard < 16 && !index->count(parent) && objs.contains(parent); ++guard) {
-      const json& po = objs[parent];
-      if (!po.contains("parents") || !po["parents"].is_array() || po["parents"].empty()) break;
-      parent = po["parents"][0].get<std::string>();
+    read[id] = std::move(b);
+    seq[id] = static_cast<int>(seq.size());
+    if (type == "Building") {
+      roots.push_back(id);
+      continue;
     }
-    auto it = index->find(parent);
-    if (it == index->end()) ctx.Fail(ptr + "/parents", "BuildingPart without a parent Building");
-    reader.ReadGeometry(*obj, ptr, &model->buildings[it->second]);
+    if (!obj.contains("parents") || !obj["parents"].is_array() || obj["parents"].empty() ||
+        !obj["parents"][0].is_string())
+      ctx.Fail(ptr + "/parents", "BuildingPart without a parent Building");
+    parent_of[id] = obj["parents"][0].get<std::string>();
+  }
+  // Depth of each part below its building; a chain that does not end at a
+  // Building (or loops) is an error.
+  std::vector<std::tuple<int, int, std::string>> by_depth;
+  for (const auto& [id, parent] : parent_of) {
+    int depth = 1;
+    std::string up = parent;
+    while (parent_of.count(up) && depth <= static_cast<int>(parent_of.size())) {
+      up = parent_of[up];
+      ++depth;
+    }
+    if (!read.count(up) || parent_of.count(up))
+      ctx.Fail("/CityObjects/" + id + "/parents", "BuildingPart without a parent Building");
+    by_depth.emplace_back(depth, seq[id], id);
+  }
+  std::sort(by_depth.begin(), by_depth.end(), std::greater<>());
+  // Deeper parts are complete before they are moved into theirs; pushed in
+  // reverse file order, each list is reversed once complete.
+  for (const auto& [depth, order, id] : by_depth) {
+    Building& b = read[id];
+    std::reverse(b.parts.begin(), b.parts.end());
+    read[parent_of[id]].parts.push_back(std::move(b));
+  }
+  for (const std::string& id : roots) {
+    Building& b = read[id];
+    std::reverse(b.parts.begin(), b.parts.end());
+    model->buildings.push_back(std::move(b));
   }
 }
 
@@ -298,8 +320,7 @@ CityModel ReadCityJson(const std::string& path) {
   const auto vertices = ReadVertices(doc, t, ctx);
   CityModel model;
   model.crs = ReadCrs(doc);
-  std::map<std::string, size_t> index;
-  ReadCityObjects(doc, vertices, ctx, &model, &index);
+  ReadCityObjects(doc, vertices, ctx, &model);
   return model;
 }
 
@@ -311,7 +332,6 @@ CityModel ReadCityJsonSeq(const std::string& path) {
   CityModel model;
   Transform t;
   bool have_header = false;
-  std::map<std::string, size_t> index;
   while (std::getline(in, line)) {
     ++ctx.line;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -322,11 +342,11 @@ CityModel ReadCityJsonSeq(const std::string& path) {
       model.crs = ReadCrs(doc);
       have_header = true;
       // The header may hold objects too (allowed, if unusual).
-      ReadCityObjects(doc, ReadVertices(doc, t, ctx), ctx, &model, &index);
+      ReadCityObjects(doc, ReadVertices(doc, t, ctx), ctx, &model);
       continue;
     }
     CheckType(doc, "CityJSONFeature", ctx);
-    ReadCityObjects(doc, ReadVertices(doc, t, ctx), ctx, &model, &index);
+    ReadCityObjects(doc, ReadVertices(doc, t, ctx), ctx, &model);
   }
   if (!have_header) throw Error(AtLine(path, 0, "empty file: no CityJSON header line"));
   return model;

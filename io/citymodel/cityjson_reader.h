@@ -10,8 +10,8 @@ namespace roofsweep {
 // first geometry with lod "2" or "2.x" is used: Solid (outer shell),
 // MultiSolid/CompositeSolid (outer shells) or Multi/CompositeSurface.
 // Semantic objects become Surfaces (their "id" attribute is kept); polygons
-// without semantics are classified by their normal. BuildingParts are merged
-// into their parent Building. Building order follows the file.
+// without semantics are classified by their normal. BuildingParts become the
+// parts of their parent (nested as "parents" says). Order follows the file.
 // Throws roofsweep::Error naming the file and the JSON pointer at fault.
 CityModel ReadCityJson(const std::string& path);
 

@@ -91,7 +91,7 @@ TEST(CityJson, SeqStreamsFeaturesThatValidate) {
   testing::ExpectModelsNear(m, ReadCityJsonSeq(path), 1e-3);
 }
 
-TEST(CityJson, BuildingPartsMergeAndMissingSemanticsUseNormals) {
+TEST(CityJson, BuildingPartsAreNestedAndMissingSemanticsUseNormals) {
   const std::string path = testing::TempDir("cj") + "/parts.city.json";
   // Two boxes' surfaces split between a Building and its BuildingPart; the
   // part has no semantics.
@@ -112,11 +112,37 @@ TEST(CityJson, BuildingPartsMergeAndMissingSemanticsUseNormals) {
   EXPECT_EQ(b.id, "B1");
   EXPECT_EQ(b.roof_type, 1000);
   EXPECT_DOUBLE_EQ(b.measured_height, 3.5);
-  ASSERT_EQ(b.surfaces.size(), 3u);
+  ASSERT_EQ(b.surfaces.size(), 1u);
   EXPECT_EQ(b.surfaces[0].type, SurfaceType::kWall);
   EXPECT_EQ(b.surfaces[0].id, "w1");
-  EXPECT_EQ(b.surfaces[1].type, SurfaceType::kGround);  // 0,1,2,3 is clockwise from above
-  EXPECT_EQ(b.surfaces[2].type, SurfaceType::kRoof);
+  ASSERT_EQ(b.parts.size(), 1u);
+  const Building& p = b.parts[0];
+  EXPECT_EQ(p.id, "P1");
+  ASSERT_EQ(p.surfaces.size(), 2u);
+  EXPECT_EQ(p.surfaces[0].type, SurfaceType::kGround);  // 0,1,2,3 is clockwise from above
+  EXPECT_EQ(p.surfaces[1].type, SurfaceType::kRoof);
+  CityModel merged = m;
+  MergeBuildingParts(&merged);
+  ASSERT_EQ(merged.buildings[0].surfaces.size(), 3u);
+  EXPECT_EQ(merged.buildings[0].surfaces[2].type, SurfaceType::kRoof);
+}
+
+TEST(CityJson, PartOfAMissingBuildingIsAnError) {
+  const std::string path = testing::TempDir("cj") + "/orphan.city.json";
+  WriteText(path, R"({"type":"CityJSON","version":"2.0",
+    "transform":{"scale":[1,1,1],"translate":[0,0,0]},
+    "CityObjects":{"P1":{"type":"BuildingPart","parents":["B9"]},
+                   "P2":{"type":"BuildingPart","parents":["P3"]},
+                   "P3":{"type":"BuildingPart","parents":["P2"]}},
+    "vertices":[]})");
+  try {
+    ReadCityJson(path);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("BuildingPart without a parent Building"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 void ExpectError(const std::string& path, const std::string& needle, bool seq = false) {

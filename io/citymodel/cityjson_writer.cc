@@ -58,7 +58,10 @@ struct CityJsonWriter::State {
     return j;
   }
 
-  json CityObject(const Building& b, const CityModelWriteOptions& options) {
+  // One CityObject; `b_type` "Building" or "BuildingPart" (the caller links
+  // parents and children).
+  json CityObject(const Building& b, const CityModelWriteOptions& options,
+                  const char* b_type = "Building") {
     json attributes = json::object();
     if (b.measured_height > 0 && std::isfinite(b.measured_height))
       attributes["measuredHeight"] = b.measured_height;
@@ -86,7 +89,7 @@ struct CityJsonWriter::State {
         values.push_back(si);
       }
     }
-    json obj = {{"type", "Building"}, {"attributes", attributes}};
+    json obj = {{"type", b_type}, {"attributes", attributes}};
     if (shell.empty()) {
       obj["geometry"] = json::array();
     } else {
@@ -101,6 +104,33 @@ struct CityJsonWriter::State {
 };
 
 namespace {
+// The building and its parts as CityObjects keyed by id, the parts linked
+// to it by "children" and "parents" (CityJSON 2.0 §BuildingPart).
+json BuildingObjects(CityJsonWriter::State* state, const Building& b, const std::string& key,
+                     const CityModelWriteOptions& options, const std::string& path,
+                     const char* b_type = "Building") {
+  json out = json::object();
+  json obj = state->CityObject(b, options, b_type);
+  json children = json::array();
+  for (size_t k = 0; k < b.parts.size(); ++k) {
+    const Building& p = b.parts[k];
+    const std::string pkey = p.id.empty() ? key + "_part_" + std::to_string(k + 1) : p.id;
+    json sub = BuildingObjects(state, p, pkey, options, path, "BuildingPart");
+    sub[pkey]["parents"] = json::array({key});
+    for (auto& [id, o] : sub.items()) {
+      if (out.contains(id) || id == key)
+        throw Error(AtLine(path, 0, "duplicate building id '" + id + "'"));
+      out[id] = std::move(o);
+    }
+    children.push_back(pkey);
+  }
+  if (!children.empty()) obj["children"] = std::move(children);
+  json all = json::object();
+  all[key] = std::move(obj);
+  for (auto& [id, o] : out.items()) all[id] = std::move(o);
+  return all;
+}
+
 void WriteAll(const std::string& path, std::FILE* f, const std::string& text) {
   if (std::fwrite(text.data(), 1, text.size(), f) != text.size())
     throw Error(AtLine(path, 0, "write failed (disk full?)"));
@@ -122,10 +152,13 @@ void CityJsonWriter::Begin(const std::string& crs, const Envelope3& envelope) {
 
 void CityJsonWriter::Write(const Building& b) {
   if (!state_) throw Error(AtLine(file_.path(), 0, "CityJsonWriter::Write before Begin"));
-  std::string key = BuildingKey(b, state_->city_objects.size() + 1);
-  if (state_->city_objects.contains(key))
-    throw Error(AtLine(file_.path(), 0, "duplicate building id '" + key + "'"));
-  state_->city_objects[key] = state_->CityObject(b, options_);
+  std::string key = BuildingKey(b, ++count_);
+  json objects = BuildingObjects(state_.get(), b, key, options_, file_.path());
+  for (auto& [id, obj] : objects.items()) {
+    if (state_->city_objects.contains(id))
+      throw Error(AtLine(file_.path(), 0, "duplicate building id '" + id + "'"));
+    state_->city_objects[id] = std::move(obj);
+  }
 }
 
 void CityJsonWriter::End() {
@@ -166,10 +199,9 @@ void CityJsonSeqWriter::Write(const Building& b) {
   if (!out_) throw Error(AtLine(file_.path(), 0, "CityJsonSeqWriter::Write before Begin"));
   const std::string key = BuildingKey(b, ++count_);
   state_->ResetVertices();  // each feature carries its own vertices
-  json obj = state_->CityObject(b, options_);
   json feature = {{"type", "CityJSONFeature"},
                   {"id", key},
-                  {"CityObjects", {{key, std::move(obj)}}},
+                  {"CityObjects", BuildingObjects(state_.get(), b, key, options_, file_.path())},
                   {"vertices", std::move(state_->vertices)}};
   WriteAll(file_.path(), out_, feature.dump() + "\n");
 }

@@ -15,6 +15,8 @@ namespace roofsweep {
 // for an EPSG CRS. Each Building has one Solid lod "2" with semantics (one
 // semantic object per Surface, carrying its id), and attributes
 // measuredHeight, roofType (SIG3D code as string) and the generic ones.
+// A building's parts are BuildingPart objects written the same way, listed
+// in its "children" and naming it in "parents".
 //
 // A CityJSON file has one vertex list for all objects, so this writer keeps
 // the document in memory until End(); use CityJsonSeqWriter to stream.
@@ -31,6 +33,7 @@ class CityJsonWriter final : public CityModelStreamWriter {
  private:
   CityModelWriteOptions options_;
   OutputFile file_;
+  size_t count_ = 0;
   std::unique_ptr<State> state_;
 };
 

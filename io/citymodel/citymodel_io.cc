@@ -136,9 +136,13 @@ void WriteCityModel(const CityModel& model, const std::string& path, const Write
   auto writer = OpenCityModelWriter(path, options);
   if (auto* ogr = dynamic_cast<OgrCityModelWriter*>(writer.get())) {
     std::map<std::string, bool> attrs;  // FlatGeobuf needs the schema up front
-    for (const auto& b : model.buildings) {
-      for (const auto& kv : b.double_attributes) attrs.emplace(kv.first, true);
-      for (const auto& kv : b.string_attributes) attrs.emplace(kv.first, false);
+    for (const auto& building : model.buildings) {
+      std::vector<const Building*> objects = building.Solids();
+      objects.push_back(&building);
+      for (const Building* b : objects) {
+        for (const auto& kv : b->double_attributes) attrs.emplace(kv.first, true);
+        for (const auto& kv : b->string_attributes) attrs.emplace(kv.first, false);
+      }
     }
     ogr->DeclareAttributes(attrs);
   }

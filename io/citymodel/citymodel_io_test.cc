@@ -49,6 +49,54 @@ TEST(CityModelIo, RoundTripThroughAllFormats) {
     EXPECT_EQ(testing::XmllintCityGml(dir + "/d.gml", &log), 0) << log;
 }
 
+// A building of two parts (the solids over one footprint) keeps its parts,
+// their attributes and geometry in every format, and the files stay valid.
+TEST(CityModelIo, BuildingPartsRoundTripThroughEveryFormat) {
+  const std::string dir = testing::TempDir("io");
+  CityModel m = testing::MakeCity(4);
+  Building whole;
+  whole.id = "house_1";
+  whole.string_attributes["footprint_id"] = "DEBE123";
+  whole.double_attributes["building_parts"] = 2;
+  whole.roof_type = roof_type::kCombination;
+  whole.parts = {m.buildings[0], m.buildings[1]};
+  whole.parts[0].id = "house_1_p1";
+  whole.parts[1].id = "house_1_p2";
+  whole.measured_height = whole.RoofTopZ() - whole.GroundZ();
+  m.buildings.erase(m.buildings.begin(), m.buildings.begin() + 2);
+  m.buildings.insert(m.buildings.begin() + 1, whole);
+  for (const char* out : {"p.gml", "p.city.json", "p.city.jsonl", "p.gpkg"}) {
+    SCOPED_TRACE(out);
+    WriteCityModel(m, dir + "/" + out);
+    const CityModel r = ReadCityModel(dir + "/" + out);
+    testing::ExpectModelsNear(m, r, 1e-3);
+    ASSERT_EQ(r.buildings.size(), 3u);
+    // The whole has no solid of its own to check; each part says it is valid.
+    EXPECT_EQ(r.buildings[1].string_attributes.count("roofsweep_validity"), 0u);
+    for (const Building& part : r.buildings[1].parts)
+      EXPECT_EQ(part.string_attributes.at("roofsweep_validity"), "valid");
+  }
+  std::string log;
+  const int rc = testing::XmllintCityGml(dir + "/p.gml", &log);
+  if (rc >= 0) EXPECT_EQ(rc, 0) << log;
+  const int cj = testing::ValidateCityJson(testing::ReadText(dir + "/p.city.json"), false, &log);
+  if (cj >= 0) EXPECT_EQ(cj, 0) << log;
+  // The flat layout keeps the parts and their attributes; the whole keeps its id.
+  WriteCityModel(m, dir + "/p.fgb");
+  CityModel flat = ReadCityModel(dir + "/p.fgb");
+  CityModel want = m;
+  want.buildings[1].string_attributes.clear();
+  want.buildings[1].double_attributes.clear();
+  want.buildings[1].roof_type = roof_type::kUnknown;
+  want.buildings[1].measured_height = 0;
+  testing::ExpectModelsNear(want, flat, 1e-3);
+  // Merged, the parts' surfaces are the building's, in order.
+  MergeBuildingParts(&flat);
+  EXPECT_TRUE(flat.buildings[1].parts.empty());
+  EXPECT_EQ(flat.buildings[1].surfaces.size(),
+            m.buildings[1].parts[0].surfaces.size() + m.buildings[1].parts[1].surfaces.size());
+}
+
 TEST(CityModelIo, RealBerlinTileConvertsToEveryFormat) {
   ROOFSWEEP_SHARED_PATH_OR_SKIP(path, "data/citygml/berlin-lod2/3910_5819.gml");
   const CityModel m = ReadCityModel(path);

@@ -10,7 +10,8 @@ namespace roofsweep {
 std::map<std::string, std::string> StringAttributesToWrite(const Building& b,
                                                            const CityModelWriteOptions& options) {
   std::map<std::string, std::string> out = b.string_attributes;
-  if (options.check_geometry)
+  // A building made of parts has no solid of its own; each part says.
+  if (options.check_geometry && !(b.surfaces.empty() && !b.parts.empty()))
     out[kValidityAttribute] = CheckBuildingSolid(b, options.check).Summary();
   return out;
 }

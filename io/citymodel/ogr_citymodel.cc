@@ -40,9 +40,9 @@ class QuietGdal {
 };
 
 const char* kReserved[] = {
-    "id",         "roof_type",    "roof_type_name", "measured_height", "building_id",
-    "surface_id", "surface_type", "surface_index",  "building_index",  "fid",
-    "geom"};
+    "id",         "roof_type",       "roof_type_name", "measured_height", "building_id",
+    "surface_id", "surface_type",    "surface_index",  "building_index",  "fid",
+    "geom",       "building_part_id"};
 
 bool IsReserved(const std::string& name) {
   for (const char* r : kReserved)
@@ -395,6 +395,7 @@ void OgrCityModelWriter::Begin(const std::string& crs, const Envelope3&) {
     };
     if (surface_fields) {
       field("building_id", OFTString);
+      field("building_part_id", OFTString);
       field("surface_id", OFTString);
       field("surface_type", OFTString);
       field("surface_index", OFTInteger);
@@ -435,20 +436,21 @@ void OgrCityModelWriter::MaybeCommitBatch() {
 void OgrCityModelWriter::Write(const Building& b) {
   if (!ds_) throw Error(AtLine(file_.path(), 0, "OgrCityModelWriter::Write before Begin"));
   QuietGdal quiet;
-  const auto strings = StringAttributesToWrite(b, options_);
   // Fields must exist before a feature is made from the layer definition.
-  auto ensure_building_fields = [&](Layer& l) {
-    for (const auto& kv : b.double_attributes) EnsureField(l, kv.first, true);
+  auto ensure_building_fields = [&](Layer& l, const Building& o,
+                                    const std::map<std::string, std::string>& strings) {
+    for (const auto& kv : o.double_attributes) EnsureField(l, kv.first, true);
     for (const auto& kv : strings)
       if (!l.fields.count(kv.first)) EnsureField(l, kv.first, false);
   };
-  auto set_building_fields = [&](OGRFeature& f) {
-    if (b.roof_type != roof_type::kUnknown) {
-      f.SetField("roof_type", b.roof_type);
-      f.SetField("roof_type_name", RoofTypeName(b.roof_type));
+  auto set_building_fields = [&](OGRFeature& f, const Building& o,
+                                 const std::map<std::string, std::string>& strings) {
+    if (o.roof_type != roof_type::kUnknown) {
+      f.SetField("roof_type", o.roof_type);
+      f.SetField("roof_type_name", RoofTypeName(o.roof_type));
     }
-    if (b.measured_height > 0) f.SetField("measured_height", b.measured_height);
-    for (const auto& [k, v] : b.double_attributes) f.SetField(k.c_str(), v);
+    if (o.measured_height > 0) f.SetField("measured_height", o.measured_height);
+    for (const auto& [k, v] : o.double_attributes) f.SetField(k.c_str(), v);
     for (const auto& [k, v] : strings) f.SetField(k.c_str(), v.c_str());
   };
   auto write = [&](Layer& l, OGRFeature* f) {
@@ -458,48 +460,93 @@ void OgrCityModelWriter::Write(const Building& b) {
                              "'" + QuietGdal::Last()));
     MaybeCommitBatch();
   };
+  auto ground_of = [](const Building& o) {
+    std::vector<const Polygon3*> ground;
+    for (const auto& s : o.surfaces)
+      if (s.type == SurfaceType::kGround)
+        for (const auto& p : s.polygons) ground.push_back(&p);
+    return ground;
+  };
+  const std::vector<const Building*> solids = b.Solids();
 
   if (multi_layer_) {
     Layer& bl = *layers_["buildings"];
-    ensure_building_fields(bl);
-    std::vector<const Polygon3*> ground;
-    for (const auto& s : b.surfaces)
-      if (s.type == SurfaceType::kGround)
-        for (const auto& p : s.polygons) ground.push_back(&p);
+    const auto strings = StringAttributesToWrite(b, options_);
+    ensure_building_fields(bl, b, strings);
+    std::vector<const Polygon3*> ground;  // the footprint of all its parts
+    for (const Building* o : solids) {
+      const auto g = ground_of(*o);
+      ground.insert(ground.end(), g.begin(), g.end());
+    }
     OGRFeature f(bl.layer->GetLayerDefn());
-    set_building_fields(f);
+    set_building_fields(f, b, strings);
     f.SetField("id", b.id.c_str());
     if (!ground.empty()) f.SetGeometryDirectly(MakeMultiPolygon(ground));
     write(bl, &f);
-  } else {
-    ensure_building_fields(*layers_["surfaces"]);
-  }
-  for (size_t si = 0; si < b.surfaces.size(); ++si) {
-    const Surface& s = b.surfaces[si];
-    if (multi_layer_ && !layers_.count(SurfaceLayerName(s.type))) {
-      auto l = std::make_unique<Layer>();  // closure surfaces: only when present
-      l->layer = CreateLayer(ds_, SurfaceLayerName(s.type), wkbMultiPolygon25D, srs_.get(),
-                             file_.path(), options_.layer_options);
-      for (const char* n : {"building_id", "surface_id", "surface_type"}) {
-        AddField(l->layer, n, OFTString, file_.path());
-        l->fields.insert(n);
+    for (const Building* part : solids) {
+      if (part == &b) continue;
+      if (!layers_.count("building_parts")) {
+        // Only files with parts get the layer.
+        auto l = std::make_unique<Layer>();
+        l->layer = CreateLayer(ds_, "building_parts", wkbMultiPolygon25D, srs_.get(), file_.path(),
+                               options_.layer_options);
+        for (auto [n, t] : {std::pair{"id", OFTString},
+                            {"building_id", OFTString},
+                            {"roof_type", OFTInteger},
+                            {"roof_type_name", OFTString},
+                            {"measured_height", OFTReal}}) {
+          AddField(l->layer, n, t, file_.path());
+          l->fields.insert(n);
+        }
+        for (const auto& [k, is_double] : declared_) EnsureField(*l, k, is_double);
+        layers_["building_parts"] = std::move(l);
       }
-      AddField(l->layer, "surface_index", OFTInteger, file_.path());
-      l->fields.insert("surface_index");
-      layers_[SurfaceLayerName(s.type)] = std::move(l);
+      Layer& pl = *layers_["building_parts"];
+      const auto part_strings = StringAttributesToWrite(*part, options_);
+      ensure_building_fields(pl, *part, part_strings);
+      OGRFeature pf(pl.layer->GetLayerDefn());
+      set_building_fields(pf, *part, part_strings);
+      pf.SetField("id", part->id.c_str());
+      pf.SetField("building_id", b.id.c_str());
+      const auto g = ground_of(*part);
+      if (!g.empty()) pf.SetGeometryDirectly(MakeMultiPolygon(g));
+      write(pl, &pf);
     }
-    Layer& sl = *layers_[multi_layer_ ? SurfaceLayerName(s.type) : "surfaces"];
-    OGRFeature f(sl.layer->GetLayerDefn());
-    if (!multi_layer_) set_building_fields(f);
-    f.SetField("building_id", b.id.c_str());
-    if (!s.id.empty()) f.SetField("surface_id", s.id.c_str());
-    f.SetField("surface_type", SurfaceTypeName(s.type));
-    f.SetField("surface_index", static_cast<int>(si));
-    if (!multi_layer_) f.SetField("building_index", static_cast<int>(written_));
-    std::vector<const Polygon3*> polys;
-    for (const auto& p : s.polygons) polys.push_back(&p);
-    f.SetGeometryDirectly(MakeMultiPolygon(polys));
-    write(sl, &f);
+  }
+  // One running surface_index over the building's parts keeps their order.
+  int surface_index = 0;
+  for (const Building* o : solids) {
+    // The flat layout repeats the attributes of the solid the surface bounds.
+    const auto strings =
+        multi_layer_ ? std::map<std::string, std::string>{} : StringAttributesToWrite(*o, options_);
+    if (!multi_layer_) ensure_building_fields(*layers_["surfaces"], *o, strings);
+    for (const Surface& s : o->surfaces) {
+      if (multi_layer_ && !layers_.count(SurfaceLayerName(s.type))) {
+        auto l = std::make_unique<Layer>();  // closure surfaces: only when present
+        l->layer = CreateLayer(ds_, SurfaceLayerName(s.type), wkbMultiPolygon25D, srs_.get(),
+                               file_.path(), options_.layer_options);
+        for (const char* n : {"building_id", "building_part_id", "surface_id", "surface_type"}) {
+          AddField(l->layer, n, OFTString, file_.path());
+          l->fields.insert(n);
+        }
+        AddField(l->layer, "surface_index", OFTInteger, file_.path());
+        l->fields.insert("surface_index");
+        layers_[SurfaceLayerName(s.type)] = std::move(l);
+      }
+      Layer& sl = *layers_[multi_layer_ ? SurfaceLayerName(s.type) : "surfaces"];
+      OGRFeature f(sl.layer->GetLayerDefn());
+      if (!multi_layer_) set_building_fields(f, *o, strings);
+      f.SetField("building_id", b.id.c_str());
+      if (o != &b) f.SetField("building_part_id", o->id.c_str());
+      if (!s.id.empty()) f.SetField("surface_id", s.id.c_str());
+      f.SetField("surface_type", SurfaceTypeName(s.type));
+      f.SetField("surface_index", surface_index++);
+      if (!multi_layer_) f.SetField("building_index", static_cast<int>(written_));
+      std::vector<const Polygon3*> polys;
+      for (const auto& p : s.polygons) polys.push_back(&p);
+      f.SetGeometryDirectly(MakeMultiPolygon(polys));
+      write(sl, &f);
+    }
   }
   ++written_;
 }
@@ -537,6 +584,13 @@ CityModel ReadOgrCityModel(const std::string& path) {
     model.buildings.back().id = id;
     return model.buildings.back();
   };
+  auto part = [](Building& b, const std::string& id) -> Building& {
+    for (Building& p : b.parts)
+      if (p.id == id) return p;
+    b.parts.emplace_back();
+    b.parts.back().id = id;
+    return b.parts.back();
+  };
   auto read_attributes = [](OGRFeature& f, Building& b) {
     OGRFeatureDefn* defn = f.GetDefnRef();
     for (int i = 0; i < defn->GetFieldCount(); ++i) {
@@ -566,8 +620,15 @@ CityModel ReadOgrCityModel(const std::string& path) {
     bl->ResetReading();
     for (auto& f : *bl) read_attributes(*f, building(f->GetFieldAsString("id")));
   }
+  if (OGRLayer* pl = ds->GetLayerByName("building_parts")) {
+    pl->ResetReading();
+    for (auto& f : *pl)
+      read_attributes(
+          *f, part(building(f->GetFieldAsString("building_id")), f->GetFieldAsString("id")));
+  }
   struct Pending {
     size_t building;
+    std::string part;  // empty: the building's own surface
     int index;
     Surface surface;
   };
@@ -589,14 +650,16 @@ CityModel ReadOgrCityModel(const std::string& path) {
     const int i_type = defn->GetFieldIndex("surface_type");
     const int i_idx = defn->GetFieldIndex("surface_index");
     const int i_bidx = defn->GetFieldIndex("building_index");
+    const int i_part = defn->GetFieldIndex("building_part_id");
     l->ResetReading();
     for (auto& f : *l) {
       Pending p;
       Building& b = building(f->GetFieldAsString(i_bid));
       p.building = index[b.id];
+      if (i_part >= 0 && f->IsFieldSetAndNotNull(i_part)) p.part = f->GetFieldAsString(i_part);
       if (i_bidx >= 0 && f->IsFieldSetAndNotNull(i_bidx))
         order[b.id] = f->GetFieldAsInteger(i_bidx);
-      if (flat) read_attributes(*f, b);
+      if (flat) read_attributes(*f, p.part.empty() ? b : part(b, p.part));
       p.index = i_idx >= 0 ? f->GetFieldAsInteger(i_idx) : static_cast<int>(surfaces.size());
       p.surface.type = layer_type;
       if (i_type >= 0 && f->IsFieldSetAndNotNull(i_type) &&
@@ -618,7 +681,22 @@ CityModel ReadOgrCityModel(const std::string& path) {
   std::stable_sort(surfaces.begin(), surfaces.end(), [](const Pending& a, const Pending& b) {
     return a.building != b.building ? a.building < b.building : a.index < b.index;
   });
-  for (auto& p : surfaces) model.buildings[p.building].surfaces.push_back(std::move(p.surface));
+  // FlatGeobuf reads features in spatial order: parts, too, are put back in
+  // the order of their first surface.
+  std::map<std::pair<size_t, std::string>, int> first_surface;
+  for (auto& p : surfaces) {
+    Building& b = model.buildings[p.building];
+    first_surface.emplace(std::make_pair(p.building, p.part), p.index);
+    (p.part.empty() ? b : part(b, p.part)).surfaces.push_back(std::move(p.surface));
+  }
+  for (size_t i = 0; i < model.buildings.size(); ++i) {
+    auto first = [&](const Building& p) {
+      auto it = first_surface.find({i, p.id});
+      return it == first_surface.end() ? INT_MAX : it->second;
+    };
+    std::stable_sort(model.buildings[i].parts.begin(), model.buildings[i].parts.end(),
+                     [&](const Building& a, const Building& b) { return first(a) < first(b); });
+  }
   if (!order.empty())
     std::stable_sort(model.buildings.begin(), model.buildings.end(),
                      [&](const Building& a, const Building& b) {

@@ -19,14 +19,18 @@ namespace roofsweep {
 // Multi-layer formats (GPKG, SQLite) get four layers, all MultiPolygonZ in
 // the block CRS promoted to 3D (OSRPromoteTo3D: ellipsoidal heights unless
 // the CRS is compound), with a spatial index:
-//   buildings        footprint = the ground surfaces; id, roof_type,
-//                    roof_type_name, measured_height, roofsweep_validity and
-//                    one field per generic attribute
+//   buildings        footprint = the ground surfaces (of all its parts);
+//                    id, roof_type, roof_type_name, measured_height,
+//                    roofsweep_validity and one field per generic attribute
+//   building_parts   (only when a building has parts) the same per part,
+//                    with building_id
 //   roof_surfaces, wall_surfaces, ground_surfaces (+ closure_surfaces when
 //   present)         one feature per semantic surface: building_id,
+//                    building_part_id (empty for the building's own),
 //                    surface_id, surface_type, surface_index
 // Single-layer formats (FlatGeobuf, GeoJSON, ...) get one layer `surfaces`
-// holding every semantic surface with the building's attributes repeated.
+// holding every semantic surface with the attributes of the building, or of
+// the part, it bounds repeated (a building made of parts keeps only its id).
 // ReadOgrCityModel rebuilds the CityModel from either layout.
 class OgrCityModelWriter final : public CityModelStreamWriter {
  public:

@@ -76,49 +76,57 @@ int ValidateCityJson(const std::string& json_text, bool feature, std::string* lo
   return 1;
 }
 
-void ExpectModelsNear(const CityModel& want, const CityModel& got, double tol, bool surface_ids) {
-  ASSERT_EQ(want.buildings.size(), got.buildings.size());
-  double worst = 0;
-  for (size_t i = 0; i < want.buildings.size(); ++i) {
-    const Building& a = want.buildings[i];
-    const Building& b = got.buildings[i];
-    SCOPED_TRACE("building " + a.id);
-    EXPECT_EQ(a.id, b.id);
-    EXPECT_EQ(a.roof_type, b.roof_type);
-    EXPECT_NEAR(a.measured_height, b.measured_height, 1e-3);
-    for (const auto& [k, v] : a.double_attributes) {
-      auto it = b.double_attributes.find(k);
-      ASSERT_NE(it, b.double_attributes.end()) << k;
-      EXPECT_NEAR(it->second, v, 1e-6) << k;
-    }
-    for (const auto& [k, v] : a.string_attributes) {
-      if (k == kValidityAttribute) continue;
-      auto it = b.string_attributes.find(k);
-      ASSERT_NE(it, b.string_attributes.end()) << k;
-      EXPECT_EQ(it->second, v) << k;
-    }
-    ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
-    for (size_t s = 0; s < a.surfaces.size(); ++s) {
-      const Surface& sa = a.surfaces[s];
-      const Surface& sb = b.surfaces[s];
-      EXPECT_EQ(sa.type, sb.type);
-      if (surface_ids) EXPECT_EQ(sa.id, sb.id);
-      ASSERT_EQ(sa.polygons.size(), sb.polygons.size());
-      for (size_t p = 0; p < sa.polygons.size(); ++p) {
-        const auto& pa = sa.polygons[p];
-        const auto& pb = sb.polygons[p];
-        ASSERT_EQ(pa.exterior.size(), pb.exterior.size());
-        ASSERT_EQ(pa.holes.size(), pb.holes.size());
-        for (size_t v = 0; v < pa.exterior.size(); ++v)
-          worst = std::max(worst, (pa.exterior[v] - pb.exterior[v]).cwiseAbs().maxCoeff());
-        for (size_t h = 0; h < pa.holes.size(); ++h) {
-          ASSERT_EQ(pa.holes[h].size(), pb.holes[h].size());
-          for (size_t v = 0; v < pa.holes[h].size(); ++v)
-            worst = std::max(worst, (pa.holes[h][v] - pb.holes[h][v]).cwiseAbs().maxCoeff());
-        }
+namespace {
+// One building and, recursively, its parts; the largest coordinate
+// difference goes to *worst.
+void ExpectBuildingsNear(const Building& a, const Building& b, bool surface_ids, double* worst) {
+  SCOPED_TRACE("building " + a.id);
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.roof_type, b.roof_type);
+  EXPECT_NEAR(a.measured_height, b.measured_height, 1e-3);
+  for (const auto& [k, v] : a.double_attributes) {
+    auto it = b.double_attributes.find(k);
+    ASSERT_NE(it, b.double_attributes.end()) << k;
+    EXPECT_NEAR(it->second, v, 1e-6) << k;
+  }
+  for (const auto& [k, v] : a.string_attributes) {
+    if (k == kValidityAttribute) continue;
+    auto it = b.string_attributes.find(k);
+    ASSERT_NE(it, b.string_attributes.end()) << k;
+    EXPECT_EQ(it->second, v) << k;
+  }
+  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+  for (size_t s = 0; s < a.surfaces.size(); ++s) {
+    const Surface& sa = a.surfaces[s];
+    const Surface& sb = b.surfaces[s];
+    EXPECT_EQ(sa.type, sb.type);
+    if (surface_ids) EXPECT_EQ(sa.id, sb.id);
+    ASSERT_EQ(sa.polygons.size(), sb.polygons.size());
+    for (size_t p = 0; p < sa.polygons.size(); ++p) {
+      const auto& pa = sa.polygons[p];
+      const auto& pb = sb.polygons[p];
+      ASSERT_EQ(pa.exterior.size(), pb.exterior.size());
+      ASSERT_EQ(pa.holes.size(), pb.holes.size());
+      for (size_t v = 0; v < pa.exterior.size(); ++v)
+        *worst = std::max(*worst, (pa.exterior[v] - pb.exterior[v]).cwiseAbs().maxCoeff());
+      for (size_t h = 0; h < pa.holes.size(); ++h) {
+        ASSERT_EQ(pa.holes[h].size(), pb.holes[h].size());
+        for (size_t v = 0; v < pa.holes[h].size(); ++v)
+          *worst = std::max(*worst, (pa.holes[h][v] - pb.holes[h][v]).cwiseAbs().maxCoeff());
       }
     }
   }
+  ASSERT_EQ(a.parts.size(), b.parts.size());
+  for (size_t k = 0; k < a.parts.size(); ++k)
+    ExpectBuildingsNear(a.parts[k], b.parts[k], surface_ids, worst);
+}
+}  // namespace
+
+void ExpectModelsNear(const CityModel& want, const CityModel& got, double tol, bool surface_ids) {
+  ASSERT_EQ(want.buildings.size(), got.buildings.size());
+  double worst = 0;
+  for (size_t i = 0; i < want.buildings.size(); ++i)
+    ExpectBuildingsNear(want.buildings[i], got.buildings[i], surface_ids, &worst);
   EXPECT_LE(worst, tol) << "largest coordinate difference " << worst;
 }
 

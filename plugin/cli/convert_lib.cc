@@ -20,12 +20,17 @@ ConvertSummary RunConvert(const ConvertRequest& request, Progress& progress) {
   WriteOptions write_options = request.write;
   // The solid checks' tolerances are metres: run them before a reprojection
   // (to degrees, perhaps) and write their outcome as it was.
-  for (Building& b : model.buildings) {
-    s.surfaces += static_cast<int>(b.surfaces.size());
-    const SolidCheckResult check = CheckBuildingSolid(b, request.write.check);
-    if (!check.Valid()) ++s.invalid_buildings;
-    if (!request.target_crs.empty() && request.write.check_geometry)
-      b.string_attributes[kValidityAttribute] = check.Summary();
+  // Each part is a solid of its own; a building is invalid when one is.
+  for (Building& building : model.buildings) {
+    bool valid = true;
+    for (Building* b : building.Solids()) {
+      s.surfaces += static_cast<int>(b->surfaces.size());
+      const SolidCheckResult check = CheckBuildingSolid(*b, request.write.check);
+      valid = valid && check.Valid();
+      if (!request.target_crs.empty() && request.write.check_geometry)
+        b->string_attributes[kValidityAttribute] = check.Summary();
+    }
+    if (!valid) ++s.invalid_buildings;
   }
   if (!request.target_crs.empty()) {
     if (model.crs.empty())

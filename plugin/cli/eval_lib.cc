@@ -67,6 +67,10 @@ EvalReport RunEval(const EvalRequest& r) {
 
   CityModel result = ReadCityModel(r.result);
   CityModel truth = ReadCityModel(truth_path);
+  // One building per building, its parts together, for every figure below
+  // (Evaluate would merge them itself; the plane losses index its buildings).
+  MergeBuildingParts(&result);
+  MergeBuildingParts(&truth);
   CheckSameCrs(result.crs, r.result, truth.crs, truth_path);
   if (truth.buildings.empty()) throw Error(truth_path + ": the ground truth has no buildings");
 

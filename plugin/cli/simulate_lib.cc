@@ -116,6 +116,9 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   CityModel input;
   if (!r.citygml.empty()) {
     input = ReadCityModel(r.citygml);
+    // The renderer and the ground truth take each building as one set of
+    // surfaces, as eval compares them.
+    MergeBuildingParts(&input);
     if (r.aoi) {
       const Eigen::Vector4d w = *r.aoi;
       std::vector<Building> kept;
