@@ -9,6 +9,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
@@ -777,6 +778,77 @@ std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
   return pieces;
 }
 
+// With footprints: the solids built over one footprint (wings or units at
+// different heights, pieces split where one envelope could not roof them)
+// become the parts of one building, which carries the footprint's id. A
+// cadastre's user counts and joins buildings by footprint. The pieces of a
+// multipolygon footprint share its id and so its building. Top-level ids
+// run in order; parts are "<building id>_p<k>"; `plane_building` follows.
+void JoinPartsPerFootprint(const std::vector<int>& footprint_of_building,
+                           const std::vector<Footprint>& footprints, AssemblyResult* res) {
+  std::vector<Building> solids = std::move(res->model.buildings);
+  res->model.buildings.clear();
+  std::map<std::string, std::string> renamed;
+  std::map<std::string, std::vector<size_t>> of_footprint;
+  auto id_of = [&](size_t i) {
+    const int f = footprint_of_building[i];
+    return f >= 0 ? footprints[f].id : std::string();
+  };
+  for (size_t i = 0; i < solids.size(); ++i)
+    if (footprint_of_building[i] >= 0) of_footprint[id_of(i)].push_back(i);
+  std::vector<bool> done(solids.size(), false);
+  for (size_t i = 0; i < solids.size(); ++i) {
+    if (done[i]) continue;
+    const std::string fid = id_of(i);
+    const std::string id = StrFormat("rs_b%04d", static_cast<int>(res->model.buildings.size()) + 1);
+    if (footprint_of_building[i] < 0 || of_footprint[fid].size() == 1) {
+      renamed[solids[i].id] = id;
+      solids[i].id = id;
+      res->model.buildings.push_back(std::move(solids[i]));
+      done[i] = true;
+      continue;
+    }
+    Building b;
+    b.id = id;
+    b.string_attributes["footprint_id"] = fid;
+    std::vector<Polygon3> roof;
+    double planes = 0, lines = 0, score = 0, photometric = 0, area = 0;
+    std::set<std::string> outlines;  // what the parts' walls stand on
+    for (size_t k : of_footprint[fid]) {
+      Building& part = solids[k];
+      done[k] = true;
+      outlines.insert(part.string_attributes["outline"]);
+      const std::string part_id =
+          StrFormat("%s_p%d", id.c_str(), static_cast<int>(b.parts.size()) + 1);
+      renamed[part.id] = part_id;
+      part.id = part_id;
+      for (const Surface& sf : part.surfaces)
+        if (sf.type == SurfaceType::kRoof)
+          roof.insert(roof.end(), sf.polygons.begin(), sf.polygons.end());
+      const auto& a = part.double_attributes;
+      planes += a.at("roof_planes");
+      lines += a.at("supporting_lines");
+      score += a.at("reliability");
+      photometric += a.at("photometric_score") * a.at("roof_planes");
+      area += a.at("footprint_m2");
+      b.parts.push_back(std::move(part));
+    }
+    b.roof_type = ClassifyRoofType(roof);
+    b.measured_height = b.RoofTopZ() - b.GroundZ();
+    std::string& outline = b.string_attributes["outline"];
+    for (const std::string& o : outlines) outline += (outline.empty() ? "" : "; ") + o;
+    b.double_attributes["building_parts"] = static_cast<double>(b.parts.size());
+    b.double_attributes["roof_planes"] = planes;
+    b.double_attributes["supporting_lines"] = lines;
+    b.double_attributes["reliability"] = score;
+    b.double_attributes["photometric_score"] = planes > 0 ? photometric / planes : 0.0;
+    b.double_attributes["footprint_m2"] = area;
+    res->model.buildings.push_back(std::move(b));
+  }
+  for (std::string& pb : res->plane_building)
+    if (!pb.empty()) pb = renamed.at(pb);
+}
+
 }  // namespace
 
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
@@ -869,6 +941,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   // buildings of their own.
   std::map<int, double> group_of;
   int building_no = 0;
+  std::vector<int> footprint_of_building;
   while (!groups.empty()) {
     const int root = groups.front().first;
     std::vector<int> members = std::move(groups.front().second);
@@ -1068,17 +1141,29 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     }
     for (int i : active) res.plane_building[origin[i]] = b.id;
     if (f >= 0) ++built_over[f];
+    footprint_of_building.push_back(f);
     res.model.buildings.push_back(std::move(b));
   }
+  if (!footprints.empty() && o.join_parts_per_footprint)
+    JoinPartsPerFootprint(footprint_of_building, footprints, &res);
   // Input planes, not their pieces (cut at footprints or party walls).
   for (const std::string& b : res.plane_building) res.planes_used += !b.empty();
-  // Every footprint ends as a building or a reason.
+  // Every footprint ends as a building or a reason; the pieces of a
+  // multipolygon footprint (one id) together.
+  std::map<std::string, std::pair<int, int>> by_id;  // id -> (solids built, planes over)
+  std::vector<std::string> order;
   for (size_t f = 0; f < footprints.size(); ++f) {
-    if (built_over[f] > 0) continue;
-    res.rejected.push_back("footprint " + footprints[f].id +
-                           (!planes_over[f].empty()
-                                ? ": its roof planes did not make a valid building"
-                                : ": no roof plane found over it"));
+    auto [it, first] = by_id.try_emplace(footprints[f].id, 0, 0);
+    if (first) order.push_back(footprints[f].id);
+    it->second.first += built_over[f];
+    it->second.second += static_cast<int>(planes_over[f].size());
+  }
+  for (const std::string& id : order) {
+    const auto [built, planes_over_it] = by_id[id];
+    if (built > 0) continue;
+    res.rejected.push_back("footprint " + id +
+                           (planes_over_it > 0 ? ": its roof planes did not make a valid building"
+                                               : ": no roof plane found over it"));
   }
   return res;
 }

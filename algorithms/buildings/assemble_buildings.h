@@ -164,6 +164,14 @@ struct AssemblyOptions {
   // not become a shed roof over all of it; faces seen on both sides are
   // covered 0.9-1.
   double footprint_min_support = 0.75;
+  // With footprints: the solids built over one footprint become the parts
+  // of one building (CityGML BuildingParts) with the footprint's id and the
+  // attributes of the whole (building_parts, summed roof_planes,
+  // supporting_lines, reliability and footprint_m2, photometric_score over
+  // all faces, the parts' outline values joined by "; "); a footprint
+  // roofed by one solid stays a plain building.
+  // false: each solid is a building of its own, labelled with the id.
+  bool join_parts_per_footprint = true;
   // Border lines: a supporting line within border_max_offset_m of an edge
   // of the outline (the convex hull of the patches) and within
   // border_max_angle_deg of it, over at least half its length, moves that
@@ -224,8 +232,9 @@ struct AssemblyResult {
 // the same footprint form a building, which carries the footprint's id
 // (string attribute footprint_id) and says what its walls stand on
 // (attribute outline: "footprint", "roof planes cut at the footprint");
-// every footprint ends as a building or a reason in
-// `rejected`.
+// several solids over one footprint are the parts of its one building
+// (join_parts_per_footprint); every footprint ends as a building or a
+// reason in `rejected`.
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& options = {},
                                  const std::vector<Footprint>& footprints = {});

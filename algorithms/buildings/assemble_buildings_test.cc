@@ -48,10 +48,13 @@ std::vector<RoofPlaneHypothesis> Gable(double x0 = 0) {
 }
 
 void ExpectAllValid(const AssemblyResult& r) {
-  for (const Building& b : r.model.buildings) {
-    const SolidCheckResult c = CheckBuildingSolid(b);
-    EXPECT_TRUE(c.Valid()) << b.id << ": " << c.Summary();
-    EXPECT_GT(c.signed_volume, 0) << b.id;
+  for (const Building& building : r.model.buildings) {
+    ASSERT_FALSE(building.Solids().empty()) << building.id;
+    for (const Building* b : building.Solids()) {
+      const SolidCheckResult c = CheckBuildingSolid(*b);
+      EXPECT_TRUE(c.Valid()) << b->id << ": " << c.Summary();
+      EXPECT_GT(c.signed_volume, 0) << b->id;
+    }
   }
 }
 
@@ -588,6 +591,70 @@ TEST(AssembleBuildingsFootprints, EveryPlaneAndFootprintEndsSomewhere) {
   EXPECT_TRUE(Mentions(r.rejected, "plane in the park", "over a footprint")) << r.rejected.size();
   EXPECT_TRUE(Mentions(r.rejected, "footprint shed", "no roof plane"));
   ExpectAllValid(r);
+}
+
+TEST(AssembleBuildingsFootprints, SolidsOverOneFootprintArePartsOfOneBuilding) {
+  // A house with a wing 3 m higher under one cadastral footprint: the two
+  // flat roofs cannot share one envelope, so two solids are built, and
+  // they are the two parts of the footprint's one building.
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp({0, 0, 1, -6}, {{0.5, 0.5}, {5.8, 0.5}, {5.8, 5.5}, {0.5, 5.5}}, 2),
+      Hyp({0, 0, 1, -9}, {{6.2, 0.5}, {11.5, 0.5}, {11.5, 5.5}, {6.2, 5.5}}, 3)};
+  const std::vector<Footprint> fps = {Fp("DEBE7", {{0, 0}, {12, 0}, {12, 6}, {0, 6}}),
+                                      Fp("DEBE8", {{20, 0}, {30, 0}, {30, 8}, {20, 8}})};
+  std::vector<RoofPlaneHypothesis> with_gable = planes;
+  for (RoofPlaneHypothesis& h : Gable(20)) with_gable.push_back(h);
+  const AssemblyResult r = AssembleBuildings(with_gable, Flat(0), {}, fps);
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  ExpectAllValid(r);
+  const Building& b = r.model.buildings[0];
+  EXPECT_EQ(b.id, "rs_b0001");
+  EXPECT_EQ(b.string_attributes.at("footprint_id"), "DEBE7");
+  EXPECT_TRUE(b.surfaces.empty());
+  ASSERT_EQ(b.parts.size(), 2u);
+  EXPECT_EQ(b.parts[0].id, "rs_b0001_p1");
+  EXPECT_EQ(b.parts[1].id, "rs_b0001_p2");
+  EXPECT_EQ(b.parts[0].string_attributes.at("footprint_id"), "DEBE7");
+  EXPECT_NEAR(b.measured_height, 9, 1e-9);
+  EXPECT_EQ(b.double_attributes.at("building_parts"), 2);
+  EXPECT_EQ(b.double_attributes.at("roof_planes"), 2);
+  EXPECT_NEAR(b.double_attributes.at("reliability"), 5, 1e-9);
+  EXPECT_NEAR(b.double_attributes.at("footprint_m2"),
+              b.parts[0].double_attributes.at("footprint_m2") +
+                  b.parts[1].double_attributes.at("footprint_m2"),
+              1e-9);
+  std::set<std::string> roofed(r.plane_building.begin(), r.plane_building.begin() + 2);
+  EXPECT_EQ(roofed, (std::set<std::string>{"rs_b0001_p1", "rs_b0001_p2"}));
+  // A footprint roofed by one solid stays a plain building.
+  const Building& gable = r.model.buildings[1];
+  EXPECT_EQ(gable.id, "rs_b0002");
+  EXPECT_TRUE(gable.parts.empty());
+  EXPECT_EQ(gable.roof_type, roof_type::kGabled);
+  EXPECT_EQ(r.plane_building[2], "rs_b0002");
+
+  AssemblyOptions apart;
+  apart.join_parts_per_footprint = false;
+  const AssemblyResult s = AssembleBuildings(with_gable, Flat(0), apart, fps);
+  ASSERT_EQ(s.model.buildings.size(), 3u);
+  for (const Building& x : s.model.buildings) EXPECT_TRUE(x.parts.empty());
+
+  // A multipolygon footprint (the wings as two polygons of one id, as
+  // cadastres and the Berlin ground surfaces have them) is one building too,
+  // and a piece left bare is no footprint "without a building".
+  const std::vector<Footprint> pieces = {Fp("DEBE7", {{0, 0}, {6, 0}, {6, 6}, {0, 6}}),
+                                         Fp("DEBE7", {{6, 0}, {12, 0}, {12, 6}, {6, 6}}),
+                                         Fp("DEBE7", {{40, 0}, {44, 0}, {44, 3}, {40, 3}})};
+  const AssemblyResult m = AssembleBuildings(planes, Flat(0), {}, pieces);
+  ASSERT_EQ(m.model.buildings.size(), 1u);
+  EXPECT_EQ(m.model.buildings[0].parts.size(), 2u);
+  EXPECT_EQ(m.model.buildings[0].string_attributes.at("footprint_id"), "DEBE7");
+  EXPECT_FALSE(Mentions(m.rejected, "footprint DEBE7", "")) << m.rejected.size();
+  ExpectAllValid(m);
+  // Bare, it gets one reason, not one per piece.
+  const AssemblyResult bare = AssembleBuildings({}, Flat(0), {}, pieces);
+  EXPECT_EQ(std::count_if(bare.rejected.begin(), bare.rejected.end(),
+                          [](const std::string& x) { return x.find("DEBE7") != x.npos; }),
+            1);
 }
 
 TEST(AssembleBuildingsFootprints, AFootprintLetsAGardenShedIn) {

@@ -513,13 +513,19 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   out.buildings = static_cast<int>(assembled.model.buildings.size());
+  for (const Building& b : assembled.model.buildings)
+    out.solids += static_cast<int>(b.Solids().size());
   if (trace)
     WritePlaneLayer(r.planes, traces, roof_planes, assembled, out.rejected, frame, manifest.crs,
                     r.overwrite);
   out.stages.push_back(
       {"LoD2 buildings",
-       StrFormat("%d of %d hypotheses, %d planes used", out.buildings, assembled.hypotheses,
+       StrFormat("%d of %d hypotheses, %d planes used", out.solids, assembled.hypotheses,
                  assembled.planes_used) +
+           (out.solids != out.buildings
+                ? StrFormat(", %d buildings (the solids over one footprint are its parts)",
+                            out.buildings)
+                : std::string()) +
            (assembled.party_cuts > 0 ? StrFormat(", %d cut at party walls", assembled.party_cuts)
                                      : std::string()),
        Since(t0)});

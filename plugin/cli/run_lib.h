@@ -66,6 +66,7 @@ struct RunStage {
 struct RunSummary {
   std::vector<RunStage> stages;
   int lines = 0, sides = 0, accepted = 0, planes = 0, buildings = 0;
+  int solids = 0;  // buildings without parts and parts: what the hypotheses became
   // Every plane or building hypothesis that did not become (part of) a
   // building, with the reason.
   std::vector<std::string> rejected;

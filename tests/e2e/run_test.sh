@@ -145,6 +145,12 @@ assert rows, "no building"
 assert all(r[0] in ids for r in rows), rows
 assert all(r[1].startswith("footprint") or r[1].startswith("roof planes cut") for r in rows), rows
 built = {r[0] for r in rows}
+assert len(built) == len(rows), ("one building per footprint", rows)
+db = sqlite3.connect(out)
+if db.execute("select 1 from gpkg_contents where table_name='building_parts'").fetchone():
+    parts = db.execute("select p.footprint_id, b.footprint_id from building_parts p "
+                       "join buildings b on p.building_id = b.id").fetchall()
+    assert parts and all(p == b for p, b in parts), parts
 rejected = json.load(open(report))["rejected"]
 for i in ids - built:
     assert any(x.startswith("footprint " + i + ":") for x in rejected), (i, rejected)

@@ -8,8 +8,10 @@ from qgis.PyQt.QtCore import QCoreApplication
 
 from .. import runner
 
-# The GeoPackage layers roofsweep writes for a LoD2 model (io/citymodel).
-CITYMODEL_LAYERS = ("buildings", "roof_surfaces", "wall_surfaces", "ground_surfaces")
+# The GeoPackage layers roofsweep writes for a LoD2 model (io/citymodel);
+# building_parts only when a building has parts (footprints roofed by
+# several solids), and load_gpkg_layers skips a layer the file lacks.
+CITYMODEL_LAYERS = ("buildings", "building_parts", "roof_surfaces", "wall_surfaces", "ground_surfaces")
 LINES_LAYERS = ("lines3d",)
 
 
