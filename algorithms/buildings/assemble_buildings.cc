@@ -364,6 +364,20 @@ struct Envelope {
   std::string worst_reason;
 };
 
+// True when more than max_overlap of active[k]'s patch lies in the other
+// active planes' patches: a plane hidden where it was seen together with
+// the planes that hide it is a second fit of their face, while a roof at
+// another height is hidden by their extensions beside it.
+bool HiddenWhereOthersWereSeen(const std::vector<RoofPlaneHypothesis>& planes,
+                               const std::vector<int>& active, size_t k, double max_overlap) {
+  const Ring2& patch = planes[active[k]].patch;
+  const double area = std::abs(SignedArea(patch));
+  double shared = 0;
+  for (size_t j = 0; j < active.size(); ++j)
+    if (j != k) shared += IntersectionArea(patch, planes[active[j]].patch);
+  return area > 0 && shared > max_overlap * area;
+}
+
 Envelope LowerEnvelope(const std::vector<RoofPlaneHypothesis>& planes,
                        const std::vector<int>& active, const Ring2& outline,
                        const std::vector<Ring2>& grown, const GroundModel& ground,
@@ -1077,6 +1091,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         for (size_t k = 0; k < active.size(); ++k) {
           const double patch = std::abs(SignedArea(planes[active[k]].patch));
           if (patch < o.min_face_area_m2 || e.face_area[k] >= o.hidden_max_fraction * patch)
+            continue;
+          if (o.hidden_duplicate_overlap < 1 &&
+              HiddenWhereOthersWereSeen(planes, active, k, o.hidden_duplicate_overlap))
             continue;
           hidden.push_back(active[k]);
           if (patch > largest_patch) largest = active[k], largest_patch = patch;

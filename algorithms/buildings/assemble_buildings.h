@@ -113,6 +113,13 @@ struct AssemblyOptions {
   // like a sliver.
   bool split_hidden = true;
   double hidden_max_fraction = 0.25;
+  // ... unless more than hidden_duplicate_overlap of its patch lies in the
+  // others' patches: hidden where they were seen too, it is a second fit
+  // of their face (two planes 3 deg apart from the lines of one face,
+  // overlapping too little for the conflicts), and is dropped like a
+  // sliver instead of becoming a shed roof of its own inside the other
+  // roof. As the conflicts' GroupingOptions::max_overlap; 1 turns it off.
+  double hidden_duplicate_overlap = 0.5;
   // Party walls: terraced houses often share one plane across their roofs
   // (same eave, ridge and pitch), which the sweep groups into one; where
   // the neighbours' roofs differ (material, colour, a seam), matching finds

@@ -47,6 +47,12 @@ std::vector<RoofPlaneHypothesis> Gable(double x0 = 0) {
       Hyp(SlopedPlane({x0, 4, ridge_z}, 30, 90), {{x0, 4}, {x0 + 10, 4}, {x0 + 10, 8}, {x0, 8}})};
 }
 
+bool Mentions(const std::vector<std::string>& lines, const std::string& a, const std::string& b) {
+  for (const std::string& l : lines)
+    if (l.find(a) != std::string::npos && l.find(b) != std::string::npos) return true;
+  return false;
+}
+
 void ExpectAllValid(const AssemblyResult& r) {
   for (const Building& building : r.model.buildings) {
     ASSERT_FALSE(building.Solids().empty()) << building.id;
@@ -292,6 +298,28 @@ TEST(AssembleBuildings, ARoofHiddenByALowerNeighbourGoesOnAsABuildingOfItsOwn) {
   ExpectAllValid(r);
 }
 
+TEST(AssembleBuildings, ASecondFitOfAFaceHiddenWhereTheFaceWasSeenIsDropped) {
+  // A gable and a second plane fitted to its south face's lines, 3 deg
+  // shallower and 5 cm higher at the ridge: above the face everywhere, so
+  // hidden, and seen over the same ground. It is no roof at another height.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
+  in.push_back(Hyp(SlopedPlane({0, 4, ridge_z + 0.05}, 27, -90),
+                   {{0, 0.5}, {6, 0.5}, {6, 3.8}, {0, 3.8}}, 0.8));
+  in.back().id = "second fit";
+  AssemblyResult r = AssembleBuildings(in, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  EXPECT_TRUE(Mentions(r.rejected, "second fit", "")) << r.rejected.size();
+  ExpectAllValid(r);
+  // Treated as a neighbour, it became a shed roof inside the gable.
+  AssemblyOptions o;
+  o.hidden_duplicate_overlap = 1;
+  r = AssembleBuildings(in, Flat(0), o);
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  EXPECT_EQ(r.model.buildings[1].roof_type, roof_type::kMonopitch);
+}
+
 TEST(AssembleBuildings, AHigherTerraceRowHiddenByTheHouseBesideItIsKept) {
   // A terrace: a 5 m house and a 20 m row joined at a party wall, the
   // row's roof 0.3 m higher. Over the hull of both, the house's planes lie
@@ -484,12 +512,6 @@ int Count(const Building& b, SurfaceType t) {
   int n = 0;
   for (const Surface& s : b.surfaces) n += s.type == t;
   return n;
-}
-
-bool Mentions(const std::vector<std::string>& lines, const std::string& a, const std::string& b) {
-  for (const std::string& l : lines)
-    if (l.find(a) != std::string::npos && l.find(b) != std::string::npos) return true;
-  return false;
 }
 
 TEST(AssembleBuildingsFootprints, WallsStandOnTheFootprint) {
