@@ -792,30 +792,28 @@ std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
   return pieces;
 }
 
-// With footprints: the solids built over one footprint (wings or units at
-// different heights, pieces split where one envelope could not roof them)
-// become the parts of one building, which carries the footprint's id. A
-// cadastre's user counts and joins buildings by footprint. The pieces of a
-// multipolygon footprint share its id and so its building. Top-level ids
-// run in order; parts are "<building id>_p<k>"; `plane_building` follows.
-void JoinPartsPerFootprint(const std::vector<int>& footprint_of_building,
-                           const std::vector<Footprint>& footprints, AssemblyResult* res) {
+// The solids with one key become the parts of one building (an empty key
+// stands alone). With footprints the key is the footprint's id: the solids
+// built over one footprint (wings or units at different heights, pieces
+// split where one envelope could not roof them) are one building carrying
+// the id, as a cadastre's user counts and joins them; the pieces of a
+// multipolygon footprint share its id and so its building. Without, it is
+// building_group. Top-level ids run in order; parts are
+// "<building id>_p<k>"; `plane_building` follows.
+void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_keys,
+               AssemblyResult* res) {
   std::vector<Building> solids = std::move(res->model.buildings);
   res->model.buildings.clear();
   std::map<std::string, std::string> renamed;
-  std::map<std::string, std::vector<size_t>> of_footprint;
-  auto id_of = [&](size_t i) {
-    const int f = footprint_of_building[i];
-    return f >= 0 ? footprints[f].id : std::string();
-  };
+  std::map<std::string, std::vector<size_t>> of_key;
   for (size_t i = 0; i < solids.size(); ++i)
-    if (footprint_of_building[i] >= 0) of_footprint[id_of(i)].push_back(i);
+    if (!key_of_building[i].empty()) of_key[key_of_building[i]].push_back(i);
   std::vector<bool> done(solids.size(), false);
   for (size_t i = 0; i < solids.size(); ++i) {
     if (done[i]) continue;
-    const std::string fid = id_of(i);
+    const std::string& fid = key_of_building[i];
     const std::string id = StrFormat("rs_b%04d", static_cast<int>(res->model.buildings.size()) + 1);
-    if (footprint_of_building[i] < 0 || of_footprint[fid].size() == 1) {
+    if (fid.empty() || of_key[fid].size() == 1) {
       renamed[solids[i].id] = id;
       solids[i].id = id;
       res->model.buildings.push_back(std::move(solids[i]));
@@ -824,14 +822,18 @@ void JoinPartsPerFootprint(const std::vector<int>& footprint_of_building,
     }
     Building b;
     b.id = id;
-    b.string_attributes["footprint_id"] = fid;
+    if (footprint_keys)
+      b.string_attributes["footprint_id"] = fid;
+    else
+      b.double_attributes["building_group"] = solids[i].double_attributes.at("building_group");
     std::vector<Polygon3> roof;
     double planes = 0, lines = 0, score = 0, photometric = 0, area = 0;
     std::set<std::string> outlines;  // what the parts' walls stand on
-    for (size_t k : of_footprint[fid]) {
+    for (size_t k : of_key[fid]) {
       Building& part = solids[k];
       done[k] = true;
-      outlines.insert(part.string_attributes["outline"]);
+      const auto outline = part.string_attributes.find("outline");
+      if (outline != part.string_attributes.end()) outlines.insert(outline->second);
       const std::string part_id =
           StrFormat("%s_p%d", id.c_str(), static_cast<int>(b.parts.size()) + 1);
       renamed[part.id] = part_id;
@@ -849,8 +851,10 @@ void JoinPartsPerFootprint(const std::vector<int>& footprint_of_building,
     }
     b.roof_type = ClassifyRoofType(roof);
     b.measured_height = b.RoofTopZ() - b.GroundZ();
-    std::string& outline = b.string_attributes["outline"];
-    for (const std::string& o : outlines) outline += (outline.empty() ? "" : "; ") + o;
+    if (!outlines.empty()) {
+      std::string& outline = b.string_attributes["outline"];
+      for (const std::string& o : outlines) outline += (outline.empty() ? "" : "; ") + o;
+    }
     b.double_attributes["building_parts"] = static_cast<double>(b.parts.size());
     b.double_attributes["roof_planes"] = planes;
     b.double_attributes["supporting_lines"] = lines;
@@ -1141,7 +1145,8 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
 
     Building b = solid ? std::move(*solid) : BuildSolid(planes, active, *env, o);
     b.id = StrFormat("rs_b%04d", static_cast<int>(res.model.buildings.size()) + 1);
-    // Convex parts of one building (split at valleys) share this number.
+    // Convex parts of one building (split at valleys) share this number;
+    // without footprints they become its parts (join_parts_per_group).
     const auto group = group_of.find(root);
     b.double_attributes["building_group"] =
         group != group_of.end() ? group->second : static_cast<double>(origin[uf.Find(root)]);
@@ -1161,8 +1166,16 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     footprint_of_building.push_back(f);
     res.model.buildings.push_back(std::move(b));
   }
-  if (!footprints.empty() && o.join_parts_per_footprint)
-    JoinPartsPerFootprint(footprint_of_building, footprints, &res);
+  if (!footprints.empty() && o.join_parts_per_footprint) {
+    std::vector<std::string> keys;
+    for (int f : footprint_of_building) keys.push_back(f >= 0 ? footprints[f].id : "");
+    JoinParts(keys, true, &res);
+  } else if (footprints.empty() && o.join_parts_per_group) {
+    std::vector<std::string> keys;
+    for (const Building& b : res.model.buildings)
+      keys.push_back(StrFormat("%.0f", b.double_attributes.at("building_group")));
+    JoinParts(keys, false, &res);
+  }
   // Input planes, not their pieces (cut at footprints or party walls).
   for (const std::string& b : res.plane_building) res.planes_used += !b.empty();
   // Every footprint ends as a building or a reason; the pieces of a

@@ -179,6 +179,15 @@ struct AssemblyOptions {
   // roofed by one solid stays a plain building.
   // false: each solid is a building of its own, labelled with the id.
   bool join_parts_per_footprint = true;
+  // Without footprints: the solids sharing building_group (the convex parts
+  // of one adjacency group: the wings of an L split at its valley, a lower
+  // neighbour split off as hidden) become the parts of one building, which
+  // holds building_group and the figures of the whole as above. Measured
+  // against the simulator's references (session 23): building quality
+  // +3.1 +- 0.5 over 30 runs; terraced neighbours of different heights
+  // are joined too, which a reference with one building per house counts
+  // against it.
+  bool join_parts_per_group = true;
   // Border lines: a supporting line within border_max_offset_m of an edge
   // of the outline (the convex hull of the patches) and within
   // border_max_angle_deg of it, over at least half its length, moves that

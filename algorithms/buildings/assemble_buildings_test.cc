@@ -53,6 +53,14 @@ bool Mentions(const std::vector<std::string>& lines, const std::string& a, const
   return false;
 }
 
+// Every solid of the result: the buildings without parts and the parts.
+std::vector<Building> Solids(const AssemblyResult& r) {
+  std::vector<Building> out;
+  for (const Building& b : r.model.buildings)
+    for (const Building* solid : b.Solids()) out.push_back(*solid);
+  return out;
+}
+
 void ExpectAllValid(const AssemblyResult& r) {
   for (const Building& building : r.model.buildings) {
     ASSERT_FALSE(building.Solids().empty()) << building.id;
@@ -193,7 +201,7 @@ TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
   AssemblyResult r = AssembleBuildings(in, Flat(0));
   EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
   double porch_area = 0;
-  for (const Building& b : r.model.buildings)
+  for (const Building& b : Solids(r))
     if (std::abs(b.measured_height - 6) < 1e-9) porch_area = b.double_attributes.at("footprint_m2");
   EXPECT_NEAR(porch_area, 6, 1e-6);
   ExpectAllValid(r);
@@ -202,8 +210,8 @@ TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
   r = AssembleBuildings(in, Flat(0));
   ASSERT_EQ(r.rejected.size(), 1u);
   EXPECT_NE(r.rejected[0].find("joins no roof plane"), std::string::npos) << r.rejected[0];
-  ASSERT_EQ(r.model.buildings.size(), 1u);
-  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  ASSERT_EQ(Solids(r).size(), 1u);
+  EXPECT_EQ(Solids(r)[0].roof_type, roof_type::kGabled);
 }
 
 TEST(AssembleBuildings, AShortLinedPlaneStandsAloneWhenItsLinesMakeASquareCorner) {
@@ -266,7 +274,7 @@ TEST(AssembleBuildings, ARoofHiddenByALowerNeighbourGoesOnAsABuildingOfItsOwn) {
   AssemblyResult r = AssembleBuildings(in, Flat(0));
   EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
   std::vector<std::pair<double, double>> got;  // height, footprint
-  for (const Building& b : r.model.buildings)
+  for (const Building& b : Solids(r))
     got.emplace_back(b.measured_height, b.double_attributes.at("footprint_m2"));
   std::sort(got.begin(), got.end());
   ASSERT_EQ(got.size(), 3u);
@@ -284,11 +292,11 @@ TEST(AssembleBuildings, ARoofHiddenByALowerNeighbourGoesOnAsABuildingOfItsOwn) {
   AssemblyOptions o;
   o.split_hidden = false;
   r = AssembleBuildings(in, Flat(0), o);
-  ASSERT_EQ(r.model.buildings.size(), 2u);
+  ASSERT_EQ(Solids(r).size(), 2u);
   ASSERT_EQ(r.rejected.size(), 1u);
   EXPECT_NE(r.rejected[0].find("plane 2"), std::string::npos) << r.rejected[0];
   std::vector<double> heights;
-  for (const Building& b : r.model.buildings) {
+  for (const Building& b : Solids(r)) {
     heights.push_back(b.measured_height);
     EXPECT_NEAR(b.double_attributes.at("footprint_m2"), 48, 1e-6) << b.id;
   }
@@ -308,16 +316,16 @@ TEST(AssembleBuildings, ASecondFitOfAFaceHiddenWhereTheFaceWasSeenIsDropped) {
                    {{0, 0.5}, {6, 0.5}, {6, 3.8}, {0, 3.8}}, 0.8));
   in.back().id = "second fit";
   AssemblyResult r = AssembleBuildings(in, Flat(0));
-  ASSERT_EQ(r.model.buildings.size(), 1u);
-  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
+  ASSERT_EQ(Solids(r).size(), 1u);
+  EXPECT_EQ(Solids(r)[0].roof_type, roof_type::kGabled);
   EXPECT_TRUE(Mentions(r.rejected, "second fit", "")) << r.rejected.size();
   ExpectAllValid(r);
   // Treated as a neighbour, it became a shed roof inside the gable.
   AssemblyOptions o;
   o.hidden_duplicate_overlap = 1;
   r = AssembleBuildings(in, Flat(0), o);
-  ASSERT_EQ(r.model.buildings.size(), 2u);
-  EXPECT_EQ(r.model.buildings[1].roof_type, roof_type::kMonopitch);
+  ASSERT_EQ(Solids(r).size(), 2u);
+  EXPECT_EQ(Solids(r)[1].roof_type, roof_type::kMonopitch);
 }
 
 TEST(AssembleBuildings, AHigherTerraceRowHiddenByTheHouseBesideItIsKept) {
@@ -335,9 +343,9 @@ TEST(AssembleBuildings, AHigherTerraceRowHiddenByTheHouseBesideItIsKept) {
   }
   AssemblyResult r = AssembleBuildings(in, Flat(0));
   EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
-  ASSERT_EQ(r.model.buildings.size(), 2u);
+  ASSERT_EQ(Solids(r).size(), 2u);
   std::vector<std::pair<double, double>> got;  // height, footprint
-  for (const Building& b : r.model.buildings) {
+  for (const Building& b : Solids(r)) {
     EXPECT_EQ(b.roof_type, roof_type::kGabled) << b.id;
     got.emplace_back(b.measured_height, b.double_attributes.at("footprint_m2"));
   }
@@ -354,9 +362,9 @@ TEST(AssembleBuildings, AHigherTerraceRowHiddenByTheHouseBesideItIsKept) {
   AssemblyOptions o;
   o.split_hidden = false;
   r = AssembleBuildings(in, Flat(0), o);
-  ASSERT_EQ(r.model.buildings.size(), 1u);
-  EXPECT_EQ(r.model.buildings[0].roof_type, roof_type::kGabled);
-  EXPECT_NEAR(r.model.buildings[0].measured_height, ridge_z + 0.3, 1e-9);
+  ASSERT_EQ(Solids(r).size(), 1u);
+  EXPECT_EQ(Solids(r)[0].roof_type, roof_type::kGabled);
+  EXPECT_NEAR(Solids(r)[0].measured_height, ridge_z + 0.3, 1e-9);
   ASSERT_EQ(r.rejected.size(), 2u);
   for (const std::string& why : r.rejected)
     EXPECT_NE(why.find("where the images saw the plane"), std::string::npos) << why;
@@ -428,14 +436,22 @@ TEST(AssembleBuildings, ValleySplitsIntoConvexPartsOfOneBuilding) {
       Hyp(SlopedPlane({0, 4, 6}, std::atan(0.5) * 180 / M_PI, -90),
           {{0, 4}, {10, 4}, {10, 8}, {0, 8}})};
   const AssemblyResult r = AssembleBuildings(in, Flat(0));
-  ASSERT_EQ(r.model.buildings.size(), 2u);
-  for (const Building& b : r.model.buildings) {
+  ASSERT_EQ(Solids(r).size(), 2u);
+  for (const Building& b : Solids(r)) {
     EXPECT_EQ(b.roof_type, roof_type::kMonopitch) << b.id;
     EXPECT_NEAR(b.measured_height, 8.0, 1e-6) << b.id;
   }
-  EXPECT_EQ(r.model.buildings[0].double_attributes.at("building_group"),
-            r.model.buildings[1].double_attributes.at("building_group"));
+  EXPECT_EQ(Solids(r)[0].double_attributes.at("building_group"),
+            Solids(r)[1].double_attributes.at("building_group"));
+  // ... the parts of one building.
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.model.buildings[0].parts.size(), 2u);
+  EXPECT_EQ(r.model.buildings[0].double_attributes.at("building_parts"), 2);
+  EXPECT_EQ(r.plane_building[0], "rs_b0001_p1");
   ExpectAllValid(r);
+  AssemblyOptions apart;
+  apart.join_parts_per_group = false;
+  EXPECT_EQ(AssembleBuildings(in, Flat(0), apart).model.buildings.size(), 2u);
   // The gable (a ridge) stays one part.
   EXPECT_EQ(AssembleBuildings(Gable(), Flat(0)).model.buildings.size(), 1u);
 }
@@ -450,26 +466,26 @@ TEST(AssembleBuildings, AShedRoofBesideAGableIsAPartOfItsOwn) {
   std::vector<RoofPlaneHypothesis> in = Gable();
   in.push_back(Hyp(SlopedPlane({10, 0, 7}, 15, -90), {{10, 0}, {16, 0}, {16, 8}, {10, 8}}));
   const AssemblyResult r = AssembleBuildings(in, Flat(0));
-  ASSERT_EQ(r.model.buildings.size(), 2u);
+  ASSERT_EQ(Solids(r).size(), 2u);
   std::multiset<int> types;
-  for (const Building& b : r.model.buildings) types.insert(b.roof_type);
+  for (const Building& b : Solids(r)) types.insert(b.roof_type);
   EXPECT_EQ(types, (std::multiset<int>{roof_type::kGabled, roof_type::kMonopitch}));
-  for (const Building& b : r.model.buildings) {
+  for (const Building& b : Solids(r)) {
     if (b.roof_type == roof_type::kMonopitch) {
       EXPECT_NEAR(b.measured_height, 7 + 8 * std::tan(15 * M_PI / 180), 1e-6);
     }
   }
-  EXPECT_EQ(r.model.buildings[0].double_attributes.at("building_group"),
-            r.model.buildings[1].double_attributes.at("building_group"));
+  EXPECT_EQ(Solids(r)[0].double_attributes.at("building_group"),
+            Solids(r)[1].double_attributes.at("building_group"));
   ExpectAllValid(r);
 
   // Without the test the three planes make one roof of three faces.
   AssemblyOptions o;
   o.split_across_edges = false;
   const AssemblyResult one = AssembleBuildings(in, Flat(0), o);
-  ASSERT_EQ(one.model.buildings.size(), 1u);
+  ASSERT_EQ(Solids(one).size(), 1u);
   int roofs = 0;
-  for (const Surface& f : one.model.buildings[0].surfaces) roofs += f.type == SurfaceType::kRoof;
+  for (const Surface& f : Solids(one)[0].surfaces) roofs += f.type == SurfaceType::kRoof;
   EXPECT_EQ(roofs, 3);
 }
 
