@@ -523,7 +523,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
        StrFormat("%d of %d hypotheses, %d planes used", out.solids, assembled.hypotheses,
                  assembled.planes_used) +
            (out.solids != out.buildings
-                ? StrFormat(", %d buildings (the solids over one footprint are its parts)",
+                ? StrFormat(footprints.empty()
+                                ? ", %d buildings (the solids of one adjacent group are its parts)"
+                                : ", %d buildings (the solids over one footprint are its parts)",
                             out.buildings)
                 : std::string()) +
            (assembled.party_cuts > 0 ? StrFormat(", %d cut at party walls", assembled.party_cuts)
