@@ -826,7 +826,6 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
       b.string_attributes["footprint_id"] = fid;
     else
       b.double_attributes["building_group"] = solids[i].double_attributes.at("building_group");
-    std::vector<Polygon3> roof;
     double planes = 0, lines = 0, score = 0, photometric = 0, area = 0;
     std::set<std::string> outlines;  // what the parts' walls stand on
     for (size_t k : of_key[fid]) {
@@ -838,9 +837,6 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
           StrFormat("%s_p%d", id.c_str(), static_cast<int>(b.parts.size()) + 1);
       renamed[part.id] = part_id;
       part.id = part_id;
-      for (const Surface& sf : part.surfaces)
-        if (sf.type == SurfaceType::kRoof)
-          roof.insert(roof.end(), sf.polygons.begin(), sf.polygons.end());
       const auto& a = part.double_attributes;
       planes += a.at("roof_planes");
       lines += a.at("supporting_lines");
@@ -849,7 +845,13 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
       area += a.at("footprint_m2");
       b.parts.push_back(std::move(part));
     }
-    b.roof_type = ClassifyRoofType(roof);
+    // The roof type of the largest part: a house with an annex is gabled,
+    // as cadastres and city models label it, and the parts say the rest.
+    const auto largest =
+        std::max_element(b.parts.begin(), b.parts.end(), [](const Building& x, const Building& y) {
+          return x.double_attributes.at("footprint_m2") < y.double_attributes.at("footprint_m2");
+        });
+    b.roof_type = largest->roof_type;
     b.measured_height = b.RoofTopZ() - b.GroundZ();
     if (!outlines.empty()) {
       std::string& outline = b.string_attributes["outline"];
@@ -944,9 +946,17 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   // plane is dropped goes on as one hypothesis per connected piece.
   std::vector<int> all(n);
   std::iota(all.begin(), all.end(), 0);
-  std::deque<std::pair<int, std::vector<int>>> groups;
+  // Each with whether it was split off its group (a hidden neighbour, a
+  // roof beyond an edge, a piece no longer touching): then it is a
+  // building of its own, not a part of the group's (join_parts_per_group).
+  struct Hypothesis {
+    int root;
+    std::vector<int> members;
+    bool split_off = false;
+  };
+  std::deque<Hypothesis> groups;
   for (std::vector<int>& piece : ConnectedPieces(all, part_links))
-    groups.emplace_back(piece.front(), std::move(piece));
+    groups.push_back({piece.front(), std::move(piece)});
   res.hypotheses = static_cast<int>(groups.size());
   std::vector<int> built_over(footprints.size(), 0);
   std::vector<std::vector<int>> planes_over(footprints.size());
@@ -960,9 +970,11 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   std::map<int, double> group_of;
   int building_no = 0;
   std::vector<int> footprint_of_building;
+  std::vector<bool> joins_group;  // per building: a part of its building_group's
   while (!groups.empty()) {
-    const int root = groups.front().first;
-    std::vector<int> members = std::move(groups.front().second);
+    const int root = groups.front().root;
+    std::vector<int> members = std::move(groups.front().members);
+    const bool split_off = groups.front().split_off;
     groups.pop_front();
     if (o.split_at_party_lines && footprints.empty()) {
       if (const auto cut = FindPartyCut(planes, members, o)) {
@@ -1009,8 +1021,8 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
           const auto kept = group_of.find(root);
           group_of[side[0].front()] =
               kept != group_of.end() ? kept->second : static_cast<double>(origin[uf.Find(root)]);
-          groups.emplace_front(side[1].front(), std::move(side[1]));
-          groups.emplace_front(side[0].front(), std::move(side[0]));
+          groups.push_front({side[1].front(), std::move(side[1]), split_off});
+          groups.push_front({side[0].front(), std::move(side[0]), split_off});
           ++res.hypotheses;
           continue;
         }
@@ -1076,7 +1088,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         if (split_across) parts = ConnectedPieces(active, edge_links);
         if (parts.size() > 1) {
           for (size_t k = 1; k < parts.size(); ++k) {
-            groups.emplace_back(root, std::move(parts[k]));
+            groups.push_back({root, std::move(parts[k]), true});
             ++res.hypotheses;
           }
           active = std::move(parts[0]);
@@ -1106,7 +1118,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         for (std::vector<int>& piece : ConnectedPieces(hidden, part_links)) {
           if (std::find(piece.begin(), piece.end(), largest) == piece.end()) continue;
           for (int i : piece) active.erase(std::find(active.begin(), active.end(), i));
-          groups.emplace_back(root, std::move(piece));
+          groups.push_back({root, std::move(piece), true});
           ++res.hypotheses;
           break;
         }
@@ -1119,7 +1131,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       // roof the gap between them and let one house's planes cut the other.
       std::vector<std::vector<int>> pieces = ConnectedPieces(active, part_links);
       for (size_t k = 1; k < pieces.size(); ++k) {
-        groups.emplace_back(root, std::move(pieces[k]));
+        groups.push_back({root, std::move(pieces[k]), true});
         ++res.hypotheses;
       }
       active = std::move(pieces[0]);
@@ -1164,6 +1176,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     for (int i : active) res.plane_building[origin[i]] = b.id;
     if (f >= 0) ++built_over[f];
     footprint_of_building.push_back(f);
+    joins_group.push_back(!split_off);
     res.model.buildings.push_back(std::move(b));
   }
   if (!footprints.empty() && o.join_parts_per_footprint) {
@@ -1172,8 +1185,10 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     JoinParts(keys, true, &res);
   } else if (footprints.empty() && o.join_parts_per_group) {
     std::vector<std::string> keys;
-    for (const Building& b : res.model.buildings)
-      keys.push_back(StrFormat("%.0f", b.double_attributes.at("building_group")));
+    for (size_t i = 0; i < res.model.buildings.size(); ++i)
+      keys.push_back(joins_group[i] ? StrFormat("%.0f", res.model.buildings[i].double_attributes.at(
+                                                            "building_group"))
+                                    : std::string());
     JoinParts(keys, false, &res);
   }
   // Input planes, not their pieces (cut at footprints or party walls).

@@ -175,18 +175,18 @@ struct AssemblyOptions {
   // of one building (CityGML BuildingParts) with the footprint's id and the
   // attributes of the whole (building_parts, summed roof_planes,
   // supporting_lines, reliability and footprint_m2, photometric_score over
-  // all faces, the parts' outline values joined by "; "); a footprint
+  // all faces, the parts' outline values joined by "; ", the roof type of
+  // its largest part, the height of the whole); a footprint
   // roofed by one solid stays a plain building.
   // false: each solid is a building of its own, labelled with the id.
   bool join_parts_per_footprint = true;
-  // Without footprints: the solids sharing building_group (the convex parts
-  // of one adjacency group: the wings of an L split at its valley, a lower
-  // neighbour split off as hidden) become the parts of one building, which
-  // holds building_group and the figures of the whole as above. Measured
-  // against the simulator's references (session 23): building quality
-  // +3.1 +- 0.5 over 30 runs; terraced neighbours of different heights
-  // are joined too, which a reference with one building per house counts
-  // against it.
+  // Without footprints: the convex parts of one adjacency group (the wings
+  // of an L split at its valley; they share building_group) become the
+  // parts of one building, which holds building_group and the figures of
+  // the whole as above. Pieces split off a group (a hidden neighbour at
+  // another height, a roof beyond an edge, pieces that no longer touch)
+  // stay buildings of their own: joined too, they made a terraced row one
+  // building and cost 60 correct roof types over 30 runs (session 23).
   bool join_parts_per_group = true;
   // Border lines: a supporting line within border_max_offset_m of an edge
   // of the outline (the convex hull of the patches) and within

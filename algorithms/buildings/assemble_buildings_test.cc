@@ -654,6 +654,7 @@ TEST(AssembleBuildingsFootprints, SolidsOverOneFootprintArePartsOfOneBuilding) {
   EXPECT_EQ(b.parts[1].id, "rs_b0001_p2");
   EXPECT_EQ(b.parts[0].string_attributes.at("footprint_id"), "DEBE7");
   EXPECT_NEAR(b.measured_height, 9, 1e-9);
+  EXPECT_EQ(b.roof_type, roof_type::kFlat);
   EXPECT_EQ(b.double_attributes.at("building_parts"), 2);
   EXPECT_EQ(b.double_attributes.at("roof_planes"), 2);
   EXPECT_NEAR(b.double_attributes.at("reliability"), 5, 1e-9);
