@@ -485,7 +485,8 @@ TEST(AssembleBuildings, AShedRoofBesideAGableIsAPartOfItsOwn) {
   const AssemblyResult one = AssembleBuildings(in, Flat(0), o);
   ASSERT_EQ(Solids(one).size(), 1u);
   int roofs = 0;
-  for (const Surface& f : Solids(one)[0].surfaces) roofs += f.type == SurfaceType::kRoof;
+  const Building first = Solids(one)[0];
+  for (const Surface& f : first.surfaces) roofs += f.type == SurfaceType::kRoof;
   EXPECT_EQ(roofs, 3);
 }
 
