@@ -811,9 +811,9 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
   std::vector<bool> done(solids.size(), false);
   for (size_t i = 0; i < solids.size(); ++i) {
     if (done[i]) continue;
-    const std::string& fid = key_of_building[i];
+    const std::string& key = key_of_building[i];
     const std::string id = StrFormat("rs_b%04d", static_cast<int>(res->model.buildings.size()) + 1);
-    if (fid.empty() || of_key[fid].size() == 1) {
+    if (key.empty() || of_key[key].size() == 1) {
       renamed[solids[i].id] = id;
       solids[i].id = id;
       res->model.buildings.push_back(std::move(solids[i]));
@@ -823,12 +823,12 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
     Building b;
     b.id = id;
     if (footprint_keys)
-      b.string_attributes["footprint_id"] = fid;
+      b.string_attributes["footprint_id"] = key;
     else
       b.double_attributes["building_group"] = solids[i].double_attributes.at("building_group");
     double planes = 0, lines = 0, score = 0, photometric = 0, area = 0;
     std::set<std::string> outlines;  // what the parts' walls stand on
-    for (size_t k : of_key[fid]) {
+    for (size_t k : of_key[key]) {
       Building& part = solids[k];
       done[k] = true;
       const auto outline = part.string_attributes.find("outline");
@@ -969,8 +969,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   // buildings of their own.
   std::map<int, double> group_of;
   int building_no = 0;
-  std::vector<int> footprint_of_building;
-  std::vector<bool> joins_group;  // per building: a part of its building_group's
+  // Per building: the parts of one building share it (JoinParts); empty
+  // when it stands alone.
+  std::vector<std::string> join_key;
   while (!groups.empty()) {
     const int root = groups.front().root;
     std::vector<int> members = std::move(groups.front().members);
@@ -1175,22 +1176,15 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
     }
     for (int i : active) res.plane_building[origin[i]] = b.id;
     if (f >= 0) ++built_over[f];
-    footprint_of_building.push_back(f);
-    joins_group.push_back(!split_off);
+    if (!footprints.empty())
+      join_key.push_back(fp && o.join_parts_per_footprint ? fp->id : "");
+    else
+      join_key.push_back(o.join_parts_per_group && !split_off
+                             ? StrFormat("%.0f", b.double_attributes.at("building_group"))
+                             : "");
     res.model.buildings.push_back(std::move(b));
   }
-  if (!footprints.empty() && o.join_parts_per_footprint) {
-    std::vector<std::string> keys;
-    for (int f : footprint_of_building) keys.push_back(f >= 0 ? footprints[f].id : "");
-    JoinParts(keys, true, &res);
-  } else if (footprints.empty() && o.join_parts_per_group) {
-    std::vector<std::string> keys;
-    for (size_t i = 0; i < res.model.buildings.size(); ++i)
-      keys.push_back(joins_group[i] ? StrFormat("%.0f", res.model.buildings[i].double_attributes.at(
-                                                            "building_group"))
-                                    : std::string());
-    JoinParts(keys, false, &res);
-  }
+  JoinParts(join_key, !footprints.empty(), &res);
   // Input planes, not their pieces (cut at footprints or party walls).
   for (const std::string& b : res.plane_building) res.planes_used += !b.empty();
   // Every footprint ends as a building or a reason; the pieces of a

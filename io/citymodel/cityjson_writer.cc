@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "algorithms/core/error.h"
 #include "io/citymodel/crs_name.h"
@@ -60,8 +61,7 @@ struct CityJsonWriter::State {
 
   // One CityObject; `b_type` "Building" or "BuildingPart" (the caller links
   // parents and children).
-  json CityObject(const Building& b, const CityModelWriteOptions& options,
-                  const char* b_type = "Building") {
+  json CityObject(const Building& b, const CityModelWriteOptions& options, const char* b_type) {
     json attributes = json::object();
     if (b.measured_height > 0 && std::isfinite(b.measured_height))
       attributes["measuredHeight"] = b.measured_height;
@@ -104,31 +104,21 @@ struct CityJsonWriter::State {
 };
 
 namespace {
-// The building and its parts as CityObjects keyed by id, the parts linked
-// to it by "children" and "parents" (CityJSON 2.0 §BuildingPart).
-json BuildingObjects(CityJsonWriter::State* state, const Building& b, const std::string& key,
-                     const CityModelWriteOptions& options, const std::string& path,
-                     const char* b_type = "Building") {
-  json out = json::object();
-  json obj = state->CityObject(b, options, b_type);
-  json children = json::array();
-  for (size_t k = 0; k < b.parts.size(); ++k) {
-    const Building& p = b.parts[k];
-    const std::string pkey = p.id.empty() ? key + "_part_" + std::to_string(k + 1) : p.id;
-    json sub = BuildingObjects(state, p, pkey, options, path, "BuildingPart");
-    sub[pkey]["parents"] = json::array({key});
-    for (auto& [id, o] : sub.items()) {
-      if (out.contains(id) || id == key)
-        throw Error(AtLine(path, 0, "duplicate building id '" + id + "'"));
-      out[id] = std::move(o);
-    }
-    children.push_back(pkey);
-  }
-  if (!children.empty()) obj["children"] = std::move(children);
-  json all = json::object();
-  all[key] = std::move(obj);
-  for (auto& [id, o] : out.items()) all[id] = std::move(o);
-  return all;
+// Adds the building (a BuildingPart when `parent` is given) and its parts
+// to `objects`, linked by "children" and "parents" (CityJSON 2.0).
+void AddCityObjects(CityJsonWriter::State* state, const Building& b, const std::string& key,
+                    const std::string& parent, const CityModelWriteOptions& options,
+                    const std::string& path, json* objects) {
+  if (objects->contains(key)) throw Error(AtLine(path, 0, "duplicate building id '" + key + "'"));
+  json obj = state->CityObject(b, options, parent.empty() ? "Building" : "BuildingPart");
+  if (!parent.empty()) obj["parents"] = json::array({parent});
+  std::vector<std::string> keys;
+  for (size_t k = 0; k < b.parts.size(); ++k)
+    keys.push_back(b.parts[k].id.empty() ? key + "_part_" + std::to_string(k + 1) : b.parts[k].id);
+  if (!keys.empty()) obj["children"] = keys;
+  (*objects)[key] = std::move(obj);
+  for (size_t k = 0; k < b.parts.size(); ++k)
+    AddCityObjects(state, b.parts[k], keys[k], key, options, path, objects);
 }
 
 void WriteAll(const std::string& path, std::FILE* f, const std::string& text) {
@@ -152,13 +142,8 @@ void CityJsonWriter::Begin(const std::string& crs, const Envelope3& envelope) {
 
 void CityJsonWriter::Write(const Building& b) {
   if (!state_) throw Error(AtLine(file_.path(), 0, "CityJsonWriter::Write before Begin"));
-  std::string key = BuildingKey(b, ++count_);
-  json objects = BuildingObjects(state_.get(), b, key, options_, file_.path());
-  for (auto& [id, obj] : objects.items()) {
-    if (state_->city_objects.contains(id))
-      throw Error(AtLine(file_.path(), 0, "duplicate building id '" + id + "'"));
-    state_->city_objects[id] = std::move(obj);
-  }
+  AddCityObjects(state_.get(), b, BuildingKey(b, ++count_), "", options_, file_.path(),
+                 &state_->city_objects);
 }
 
 void CityJsonWriter::End() {
@@ -199,9 +184,11 @@ void CityJsonSeqWriter::Write(const Building& b) {
   if (!out_) throw Error(AtLine(file_.path(), 0, "CityJsonSeqWriter::Write before Begin"));
   const std::string key = BuildingKey(b, ++count_);
   state_->ResetVertices();  // each feature carries its own vertices
+  json objects = json::object();
+  AddCityObjects(state_.get(), b, key, "", options_, file_.path(), &objects);
   json feature = {{"type", "CityJSONFeature"},
                   {"id", key},
-                  {"CityObjects", BuildingObjects(state_.get(), b, key, options_, file_.path())},
+                  {"CityObjects", std::move(objects)},
                   {"vertices", std::move(state_->vertices)}};
   WriteAll(file_.path(), out_, feature.dump() + "\n");
 }

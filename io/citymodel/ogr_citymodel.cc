@@ -379,46 +379,52 @@ void OgrCityModelWriter::EnsureField(Layer& l, const std::string& name, bool is_
   l.fields.insert(name);
 }
 
+OgrCityModelWriter::Layer& OgrCityModelWriter::MakeLayer(const std::string& name,
+                                                         bool building_fields, bool surface_fields,
+                                                         bool part_fields) {
+  auto l = std::make_unique<Layer>();
+  l->layer =
+      CreateLayer(ds_, name, wkbMultiPolygon25D, srs_.get(), file_.path(), options_.layer_options);
+  auto field = [&](const char* n, OGRFieldType t) {
+    AddField(l->layer, n, t, file_.path());
+    l->fields.insert(n);
+  };
+  if (surface_fields) {
+    field("building_id", OFTString);
+    field("building_part_id", OFTString);
+    field("surface_id", OFTString);
+    field("surface_type", OFTString);
+    field("surface_index", OFTInteger);
+    // FlatGeobuf sorts features spatially; this restores building order.
+    if (!multi_layer_) field("building_index", OFTInteger);
+  } else {
+    field("id", OFTString);
+    if (part_fields) field("building_id", OFTString);
+  }
+  if (building_fields) {
+    field("roof_type", OFTInteger);
+    field("roof_type_name", OFTString);
+    field("measured_height", OFTReal);
+    if (options_.check_geometry) field(kValidityAttribute, OFTString);
+    for (const auto& [k, is_double] : declared_) EnsureField(*l, k, is_double);
+  }
+  Layer& out = *l;
+  layers_[name] = std::move(l);
+  return out;
+}
+
 void OgrCityModelWriter::Begin(const std::string& crs, const Envelope3&) {
   GDALDriver* drv = WriteDriver(driver_name_, file_.path());
   // GeoJSON can only name a CRS by its code, which a promoted 3D CRS lacks.
   srs_ = Make3dSrs(crs, file_.path(), !EQUAL(driver_name_.c_str(), "GeoJSON"));
   ds_ = OpenOutput(drv, file_, options_.update, options_.dataset_options);
   QuietGdal quiet;
-  auto make = [&](const std::string& name, bool building_fields, bool surface_fields) {
-    auto l = std::make_unique<Layer>();
-    l->layer = CreateLayer(ds_, name, wkbMultiPolygon25D, srs_.get(), file_.path(),
-                           options_.layer_options);
-    auto field = [&](const char* n, OGRFieldType t) {
-      AddField(l->layer, n, t, file_.path());
-      l->fields.insert(n);
-    };
-    if (surface_fields) {
-      field("building_id", OFTString);
-      field("building_part_id", OFTString);
-      field("surface_id", OFTString);
-      field("surface_type", OFTString);
-      field("surface_index", OFTInteger);
-      // FlatGeobuf sorts features spatially; this restores building order.
-      if (!multi_layer_) field("building_index", OFTInteger);
-    } else {
-      field("id", OFTString);
-    }
-    if (building_fields) {
-      field("roof_type", OFTInteger);
-      field("roof_type_name", OFTString);
-      field("measured_height", OFTReal);
-      if (options_.check_geometry) field(kValidityAttribute, OFTString);
-      for (const auto& [k, is_double] : declared_) EnsureField(*l, k, is_double);
-    }
-    layers_[name] = std::move(l);
-  };
   if (multi_layer_) {
-    make("buildings", true, false);
+    MakeLayer("buildings", true, false);
     for (SurfaceType t : {SurfaceType::kRoof, SurfaceType::kWall, SurfaceType::kGround})
-      make(SurfaceLayerName(t), false, true);
+      MakeLayer(SurfaceLayerName(t), false, true);
   } else {
-    make("surfaces", true, true);
+    MakeLayer("surfaces", true, true);
   }
   in_transaction_ = ds_->StartTransaction() == OGRERR_NONE;
 }
@@ -485,22 +491,8 @@ void OgrCityModelWriter::Write(const Building& b) {
     write(bl, &f);
     for (const Building* part : solids) {
       if (part == &b) continue;
-      if (!layers_.count("building_parts")) {
-        // Only files with parts get the layer.
-        auto l = std::make_unique<Layer>();
-        l->layer = CreateLayer(ds_, "building_parts", wkbMultiPolygon25D, srs_.get(), file_.path(),
-                               options_.layer_options);
-        for (auto [n, t] : {std::pair{"id", OFTString},
-                            {"building_id", OFTString},
-                            {"roof_type", OFTInteger},
-                            {"roof_type_name", OFTString},
-                            {"measured_height", OFTReal}}) {
-          AddField(l->layer, n, t, file_.path());
-          l->fields.insert(n);
-        }
-        for (const auto& [k, is_double] : declared_) EnsureField(*l, k, is_double);
-        layers_["building_parts"] = std::move(l);
-      }
+      // Only files with parts get the layer.
+      if (!layers_.count("building_parts")) MakeLayer("building_parts", true, false, true);
       Layer& pl = *layers_["building_parts"];
       const auto part_strings = StringAttributesToWrite(*part, options_);
       ensure_building_fields(pl, *part, part_strings);
@@ -521,18 +513,9 @@ void OgrCityModelWriter::Write(const Building& b) {
         multi_layer_ ? std::map<std::string, std::string>{} : StringAttributesToWrite(*o, options_);
     if (!multi_layer_) ensure_building_fields(*layers_["surfaces"], *o, strings);
     for (const Surface& s : o->surfaces) {
-      if (multi_layer_ && !layers_.count(SurfaceLayerName(s.type))) {
-        auto l = std::make_unique<Layer>();  // closure surfaces: only when present
-        l->layer = CreateLayer(ds_, SurfaceLayerName(s.type), wkbMultiPolygon25D, srs_.get(),
-                               file_.path(), options_.layer_options);
-        for (const char* n : {"building_id", "building_part_id", "surface_id", "surface_type"}) {
-          AddField(l->layer, n, OFTString, file_.path());
-          l->fields.insert(n);
-        }
-        AddField(l->layer, "surface_index", OFTInteger, file_.path());
-        l->fields.insert("surface_index");
-        layers_[SurfaceLayerName(s.type)] = std::move(l);
-      }
+      // Closure surfaces: a layer only when present.
+      if (multi_layer_ && !layers_.count(SurfaceLayerName(s.type)))
+        MakeLayer(SurfaceLayerName(s.type), false, true);
       Layer& sl = *layers_[multi_layer_ ? SurfaceLayerName(s.type) : "surfaces"];
       OGRFeature f(sl.layer->GetLayerDefn());
       if (!multi_layer_) set_building_fields(f, *o, strings);

@@ -52,6 +52,12 @@ class OgrCityModelWriter final : public CityModelStreamWriter {
 
  private:
   struct Layer;
+  // A layer with the fields of a building (id, roof type, height,
+  // validity, the declared attributes), of a surface (building_id,
+  // building_part_id, surface_id, ...) or both; part_fields adds
+  // building_id to a building layer (building_parts).
+  Layer& MakeLayer(const std::string& name, bool building_fields, bool surface_fields,
+                   bool part_fields = false);
   void EnsureField(Layer& layer, const std::string& name, bool is_double);
   void MaybeCommitBatch();
 
