@@ -711,7 +711,14 @@ std::optional<PartyCut> FindPartyCut(const std::vector<RoofPlaneHypothesis>& pla
     if (g.norm() < std::sin(o.party_min_slope_deg * kDeg) || p.patch.size() < 3) continue;
     const Eigen::Vector2d fall = g.normalized(), across(-fall.y(), fall.x());
     const Ring2 near = GrowConvex(p.patch, o.adjacency_gap_m);
-    for (const auto& l : p.lines_xy) {
+    std::vector<std::array<Eigen::Vector2d, 2>> marks = p.lines_xy;
+    marks.insert(marks.end(), p.colour_breaks.begin(), p.colour_breaks.end());
+    for (size_t li = 0; li < marks.size(); ++li) {
+      const auto& l = marks[li];
+      // A colour break alone may be the end of a patch that reaches past
+      // its roof (onto the ground or a lower neighbour): it cuts only where
+      // another face shows the wall too.
+      const bool from_colour = li >= p.lines_xy.size();
       const Eigen::Vector2d d = l[1] - l[0];
       const double len = d.norm();
       if (len < 1e-6 || std::abs(d.dot(fall)) < cos_max * len) continue;
@@ -741,22 +748,25 @@ std::optional<PartyCut> FindPartyCut(const std::vector<RoofPlaneHypothesis>& pla
       // (a line along the cut): one roof face may span several units where
       // its neighbour across the ridge is divided.
       bool confirmed = true;
+      int confirmations = 0;
       for (int k : members) {
         const RoofPlaneHypothesis& q = planes[k];
         if (k == i || !CutReaches(cut, q.patch) ||
             std::abs(q.plane.head<3>().dot(p.plane.head<3>())) >= cos_max)
           continue;
         bool seen = false;
-        for (const auto& lq : q.lines_xy) {
-          const Eigen::Vector2d dq = lq[1] - lq[0];
-          seen = seen || (dq.norm() >= o.party_confirm_length_m &&
-                          std::abs(dq.dot(across)) <= sin_max * dq.norm() &&
-                          std::abs(across.dot(lq[0]) + cut.offset) <= o.party_confirm_offset_m &&
-                          std::abs(across.dot(lq[1]) + cut.offset) <= o.party_confirm_offset_m);
-        }
+        for (const auto* marks_q : {&q.lines_xy, &q.colour_breaks})
+          for (const auto& lq : *marks_q) {
+            const Eigen::Vector2d dq = lq[1] - lq[0];
+            seen = seen || (dq.norm() >= o.party_confirm_length_m &&
+                            std::abs(dq.dot(across)) <= sin_max * dq.norm() &&
+                            std::abs(across.dot(lq[0]) + cut.offset) <= o.party_confirm_offset_m &&
+                            std::abs(across.dot(lq[1]) + cut.offset) <= o.party_confirm_offset_m);
+          }
         confirmed = confirmed && seen;
+        confirmations += seen;
       }
-      if (!confirmed) continue;
+      if (!confirmed || (from_colour && confirmations == 0)) continue;
       return cut;
     }
   }

@@ -26,6 +26,11 @@ struct RoofPlaneHypothesis {
   // building's outline, the outline follows the line (B&Z §5 delineation
   // by border lines) rather than the edge of the patches.
   std::vector<std::array<Eigen::Vector2d, 2>> lines_xy;
+  // Plan segments down the fall line where the face's colour changes
+  // across its whole depth (FindColourBreaks): a party wall that no line
+  // marks. The assembly cuts at them as at a line down the face
+  // (split_at_party_lines); they support nothing else.
+  std::vector<std::array<Eigen::Vector2d, 2>> colour_breaks;
   // Proposed by a completion step from another plane rather than found by
   // the sweep over this patch: in conflicts it yields to every found plane
   // (completion fills gaps, it does not overrule direct evidence).

@@ -865,4 +865,35 @@ TEST(AssembleBuildings, PartyLineDownTheSlopeCutsTerracedHouses) {
   EXPECT_EQ(AssembleBuildings(row(front, back), Flat(0), off).model.buildings.size(), 1u);
 }
 
+// The same row roofed apart: a colour break down both faces at x = 6 cuts
+// it as lines there do, and a break and a line confirm each other. A break
+// on one face only does not cut, nor does a break on a face that no other
+// face confirms: alone it may be the end of a patch that reaches past its
+// roof.
+TEST(AssembleBuildings, ColourBreaksDownBothFacesCutTerracedHouses) {
+  using Lines = std::vector<std::array<Eigen::Vector2d, 2>>;
+  const double ridge_z = 6 + 4 * std::tan(35 * M_PI / 180);
+  auto row = [&](Lines front_breaks, Lines back_breaks, Lines back_lines = {}) {
+    std::vector<RoofPlaneHypothesis> p = {
+        Hyp(SlopedPlane({0, 4, ridge_z}, 35, -90), {{0, 0}, {12, 0}, {12, 4}, {0, 4}}),
+        Hyp(SlopedPlane({0, 4, ridge_z}, 35, 90), {{0, 4}, {12, 4}, {12, 8}, {0, 8}})};
+    p[0].colour_breaks = std::move(front_breaks);
+    p[1].colour_breaks = std::move(back_breaks);
+    p[1].lines_xy = std::move(back_lines);
+    return p;
+  };
+  const Lines front = {{{{6, 0.3}, {6, 3.7}}}}, back = {{{{6.1, 4.3}, {6.1, 7.7}}}};
+  const AssemblyResult cut = AssembleBuildings(row(front, back), Flat(0));
+  EXPECT_EQ(cut.model.buildings.size(), 2u);
+  EXPECT_EQ(cut.party_cuts, 1);
+  ExpectAllValid(cut);
+  EXPECT_EQ(AssembleBuildings(row(front, {}, back), Flat(0)).party_cuts, 1);
+  EXPECT_EQ(AssembleBuildings(row(front, {}), Flat(0)).model.buildings.size(), 1u);
+  // A shed roof: no other face to confirm the break.
+  std::vector<RoofPlaneHypothesis> shed = {
+      Hyp(SlopedPlane({0, 0, 8}, 15, -90), {{0, 0}, {12, 0}, {12, 6}, {0, 6}})};
+  shed[0].colour_breaks = {{{{6, 0.3}, {6, 5.7}}}};
+  EXPECT_EQ(AssembleBuildings(shed, Flat(0)).party_cuts, 0);
+}
+
 }  // namespace roofsweep

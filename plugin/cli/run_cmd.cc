@@ -31,7 +31,7 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
-  bool no_mirror = false;
+  bool no_mirror = false, no_colour_breaks = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -72,6 +72,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "intersection with a neighbouring plane (default 2, as in the paper)")
       .Flag("-sweep_planes_only", &sweep_only,
             "planes from the sweep only, not also from pairs of coplanar lines")
+      .Flag("-no_colour_breaks", &no_colour_breaks,
+            "without footprints, do not cut terraced houses apart where their shared roof "
+            "changes colour across its whole depth (only where a 3D line runs down the party "
+            "wall)")
       .Flag("-no_mirror_faces", &no_mirror,
             "do not propose, beyond a ridge line, the mirror image of a roof face found from "
             "one side of it only (completion by symmetry, verified like any plane)");
@@ -83,6 +87,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   if (!p.Parse(args)) return 0;
   r.line_planes = !sweep_only;
   r.mirror_faces = !no_mirror;
+  r.colour_breaks = !no_colour_breaks;
   flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {

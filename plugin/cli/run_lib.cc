@@ -96,6 +96,9 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
                      const AssemblyResult& assembly, const std::vector<std::string>& rejected,
                      const LocalFrame& frame, const std::string& crs, bool overwrite) {
   std::map<std::string, std::string> building_of, failed_with;
+  std::map<std::string, int> breaks_of;
+  for (const RoofPlaneHypothesis& h : assembled)
+    breaks_of[h.id] = static_cast<int>(h.colour_breaks.size());
   for (size_t i = 0; i < assembled.size() && i < assembly.plane_building.size(); ++i) {
     if (!assembly.plane_building[i].empty())
       building_of[assembled[i].id] = assembly.plane_building[i];
@@ -142,6 +145,10 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
     // Accepted on its lines where the images could not tell its height.
     f.integers["height_from_lines"] = t.check.accepted && !t.check.height_confirmed;
     f.integers["samples"] = t.check.samples;
+    // Where the face changes colour across its depth (a party wall the
+    // assembly may cut at); kept planes only, without footprints.
+    const auto breaks = breaks_of.find(h.id);
+    f.integers["colour_breaks"] = breaks != breaks_of.end() ? breaks->second : 0;
     f.reals["longest_line_m"] = h.longest_line_m;
     f.reals["slope_deg"] = std::acos(std::clamp(std::abs(h.plane[2]), 0.0, 1.0)) * 180 / M_PI;
     f.reals["area_m2"] = std::abs(SignedArea(h.patch));
@@ -506,6 +513,21 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         {"flat roofs over bare footprints",
          StrFormat("%zu of %zu footprints without a plane: %zu proposed, %zu confirmed",
                    which.size(), footprints.size(), proposed, confirmed),
+         Since(t0)});
+  }
+
+  if (footprints.empty() && r.colour_breaks && r.assembly.split_at_party_lines) {
+    t0 = Clock::now();
+    const auto breaks = FindColourBreaks(block, images, roof_planes, r.colour_break);
+    size_t n_breaks = 0, n_faces = 0;
+    for (size_t i = 0; i < roof_planes.size(); ++i) {
+      roof_planes[i].colour_breaks = breaks[i];
+      n_breaks += breaks[i].size();
+      n_faces += !breaks[i].empty();
+    }
+    out.stages.push_back(
+        {"colour breaks",
+         StrFormat("%zu on %zu of %zu roof faces", n_breaks, n_faces, roof_planes.size()),
          Since(t0)});
   }
 

@@ -8,6 +8,7 @@
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
 #include "algorithms/matching/match_options.h"
+#include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
 #include "algorithms/sweep/plane_grouping.h"
 #include "algorithms/sweep/sweep_options.h"
@@ -55,6 +56,12 @@ struct RunRequest {
   // line proposes the face beyond the ridge, verified like any plane.
   bool mirror_faces = true;
   MirrorCompletionOptions mirror;
+  // Without footprints: terraced houses are cut apart where their shared
+  // roof changes colour across its whole depth (FindColourBreaks), as
+  // where a 3D line runs down a party wall (AssemblyOptions::
+  // split_at_party_lines, which must be on too).
+  bool colour_breaks = true;
+  ColourBreakOptions colour_break;
 };
 
 struct RunStage {
