@@ -1,5 +1,6 @@
 #include "algorithms/eval/eval_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -38,6 +39,17 @@ class Table {
 };
 
 std::string Of(int a, int b) { return std::to_string(a) + " of " + std::to_string(b); }
+
+// The commonest roof type mistakes, most frequent first (a few lines).
+std::vector<std::pair<std::pair<int, int>, int>> RoofTypeMistakes(const BuildingScores& b) {
+  std::vector<std::pair<std::pair<int, int>, int>> out;
+  for (const auto& [codes, n] : b.roof_type_pairs)
+    if (codes.first != codes.second) out.emplace_back(codes, n);
+  std::stable_sort(out.begin(), out.end(),
+                   [](const auto& x, const auto& y) { return x.second > y.second; });
+  if (out.size() > 5) out.resize(5);
+  return out;
+}
 
 nlohmann::json InputJson(const InputCounts& c) {
   return {{"roof_polygons", c.roof_polygons},
@@ -87,6 +99,9 @@ std::string FormatTable(const EvalResult& r) {
   t.Row("quality", Pct(b.quality));
   t.Row("roof type agreement", Pct(b.roof_type_agreement),
         Of(b.roof_type_same, b.roof_type_compared) + " with known type");
+  for (const auto& [codes, n] : RoofTypeMistakes(b))
+    t.Row("  " + std::string(RoofTypeName(codes.first)) + " as " + RoofTypeName(codes.second),
+          std::to_string(n), "buildings");
   if (r.lines3d.evaluated) {
     const auto& l = r.lines3d;
     t.Section("3D lines (within " + Fmt(r.options.lines.distance_m * 100, "%.0f") + " cm, " +
@@ -163,7 +178,12 @@ nlohmann::json ToJson(const EvalResult& r) {
                     {"tp_result", b.tp_result},
                     {"roof_type_agreement", Num(b.roof_type_agreement)},
                     {"roof_type_compared", b.roof_type_compared},
-                    {"roof_type_same", b.roof_type_same}};
+                    {"roof_type_same", b.roof_type_same},
+                    {"roof_type_pairs", nlohmann::json::array()}};
+  for (const auto& [codes, n] : b.roof_type_pairs)
+    j["buildings"]["roof_type_pairs"].push_back({{"reference", RoofTypeName(codes.first)},
+                                                 {"result", RoofTypeName(codes.second)},
+                                                 {"count", n}});
   j["lines3d"] = {{"evaluated", l.evaluated},
                   {"precision", Num(l.precision)},
                   {"completeness", Num(l.completeness)},

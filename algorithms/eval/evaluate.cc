@@ -325,6 +325,7 @@ void ScoreBuildings(const CityModel& result, const CityModel& truth, const EvalO
     if (mt.best[j] < 0 || truth.buildings[j].roof_type == roof_type::kUnknown) continue;
     ++s.roof_type_compared;
     s.roof_type_same += result.buildings[mt.best[j]].roof_type == truth.buildings[j].roof_type;
+    ++s.roof_type_pairs[{truth.buildings[j].roof_type, result.buildings[mt.best[j]].roof_type}];
   }
   for (int i = 0; i < s.n_result; ++i) out->result_building_matched.push_back(mr.best[i] >= 0);
   s.roof_type_agreement = Ratio(s.roof_type_same, s.roof_type_compared);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -117,6 +118,9 @@ struct BuildingScores {
   std::optional<double> completeness, correctness, quality;
   int roof_type_compared = 0, roof_type_same = 0;
   std::optional<double> roof_type_agreement;
+  // The compared buildings by (reference, result) SIG3D code: where the
+  // roof types go wrong.
+  std::map<std::pair<int, int>, int> roof_type_pairs;
 };
 
 struct Lines3dScores {

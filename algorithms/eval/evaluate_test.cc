@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "algorithms/core/error.h"
+#include "algorithms/eval/eval_report.h"
 #include "algorithms/eval/test_models.h"
 
 namespace roofsweep {
@@ -223,6 +224,14 @@ TEST(Evaluate, WrongNormalsDoNotMatchButFootprintsDo) {
   EXPECT_DOUBLE_EQ(*r.roof_planes.correctness, 0);
   EXPECT_DOUBLE_EQ(*r.buildings.completeness, 1);
   EXPECT_DOUBLE_EQ(*r.buildings.roof_type_agreement, 0);
+  const std::map<std::pair<int, int>, int> pairs = {{{roof_type::kGabled, roof_type::kFlat}, 1}};
+  EXPECT_EQ(r.buildings.roof_type_pairs, pairs);
+  EXPECT_NE(FormatTable(r).find("gabled as flat"), std::string::npos);
+  const nlohmann::json j = ToJson(r)["buildings"]["roof_type_pairs"];
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["reference"], "gabled");
+  EXPECT_EQ(j[0]["result"], "flat");
+  EXPECT_EQ(j[0]["count"], 1);
   // Under-segmentation is still seen: one result plane over two reference planes.
   EXPECT_EQ(r.roof_planes.n_n_to_1, 1);
 }
