@@ -836,6 +836,92 @@ std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
 // multipolygon footprint share its id and so its building. Without, it is
 // building_group. Top-level ids run in order; parts are
 // "<building id>_p<k>"; `plane_building` follows.
+// The ridge of a single-face (shed) roof: its highest vertices.
+struct ShedRidge {
+  bool valid = false;
+  Eigen::Vector2d downhill = Eigen::Vector2d::Zero();                        // unit, plan
+  Eigen::Vector2d a = Eigen::Vector2d::Zero(), b = Eigen::Vector2d::Zero();  // ends, plan
+  double z = 0;
+};
+
+ShedRidge RidgeOfShed(const Building& solid) {
+  ShedRidge r;
+  std::vector<Polygon3> roofs;
+  for (const Surface& s : solid.surfaces)
+    if (s.type == SurfaceType::kRoof)
+      roofs.insert(roofs.end(), s.polygons.begin(), s.polygons.end());
+  if (ClassifyRoofType(roofs) != roof_type::kMonopitch) return r;
+  const Polygon3* face = &roofs.front();
+  for (const Polygon3& p : roofs)
+    if (p.Area() > face->Area()) face = &p;
+  const Eigen::Vector3d n = face->Normal();
+  const Eigen::Vector2d g(n.x(), n.y());
+  if (g.norm() < std::sin(10 * kDeg)) return r;
+  r.downhill = g.normalized();
+  const Eigen::Vector2d along(-r.downhill.y(), r.downhill.x());
+  double top = -std::numeric_limits<double>::infinity();
+  for (const auto& v : face->exterior) top = std::max(top, v.z());
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& v : face->exterior) {
+    if (v.z() < top - 0.15) continue;
+    const double s = along.dot(v.head<2>());
+    if (s < lo) lo = s, r.a = v.head<2>();
+    if (s > hi) hi = s, r.b = v.head<2>();
+  }
+  r.z = top;
+  r.valid = hi - lo > 0.5;
+  return r;
+}
+
+// The two faces of one gable built as two shed-roof solids (see
+// AssemblyOptions::join_gable_halves): their join keys made one.
+void JoinGableHalves(const std::vector<Building>& solids, const AssemblyOptions& o,
+                     std::vector<std::string>* key) {
+  const size_t n = solids.size();
+  std::vector<ShedRidge> ridge(n);
+  for (size_t i = 0; i < n; ++i) ridge[i] = RidgeOfShed(solids[i]);
+  UnionFind uf(static_cast<int>(n));
+  std::map<std::string, size_t> first_of_key;
+  for (size_t i = 0; i < n; ++i)
+    if (!(*key)[i].empty()) {
+      const auto [it, fresh] = first_of_key.emplace((*key)[i], i);
+      if (!fresh) uf.Join(static_cast<int>(it->second), static_cast<int>(i));
+    }
+  bool joined = false;
+  const double cos_apart = std::cos(20 * kDeg);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      const ShedRidge& p = ridge[i];
+      const ShedRidge& q = ridge[j];
+      if (!p.valid || !q.valid ||
+          solids[i].double_attributes.at("building_group") !=
+              solids[j].double_attributes.at("building_group") ||
+          -p.downhill.dot(q.downhill) < cos_apart || std::abs(p.z - q.z) > o.gable_ridge_max_step_m)
+        continue;
+      // q's ridge ends within the offset of p's ridge line, and the two
+      // overlap along it over half the shorter one.
+      const Eigen::Vector2d along = (p.b - p.a).normalized();
+      const Eigen::Vector2d across(-along.y(), along.x());
+      if (std::abs(across.dot(q.a - p.a)) > o.gable_ridge_max_offset_m ||
+          std::abs(across.dot(q.b - p.a)) > o.gable_ridge_max_offset_m)
+        continue;
+      const double p0 = 0, p1 = along.dot(p.b - p.a);
+      double q0 = along.dot(q.a - p.a), q1 = along.dot(q.b - p.a);
+      if (q0 > q1) std::swap(q0, q1);
+      const double common = std::min(p1, q1) - std::max(p0, q0);
+      if (common < 0.5 * std::min(p1 - p0, q1 - q0)) continue;
+      uf.Join(static_cast<int>(i), static_cast<int>(j));
+      joined = true;
+    }
+  if (!joined) return;
+  std::map<int, int> size;
+  for (size_t i = 0; i < n; ++i) ++size[uf.Find(static_cast<int>(i))];
+  for (size_t i = 0; i < n; ++i) {
+    const int root = uf.Find(static_cast<int>(i));
+    if (size[root] > 1) (*key)[i] = StrFormat("joined %d", root);
+  }
+}
+
 void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_keys,
                AssemblyResult* res) {
   std::vector<Building> solids = std::move(res->model.buildings);
@@ -888,6 +974,14 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
           return x.double_attributes.at("footprint_m2") < y.double_attributes.at("footprint_m2");
         });
     b.roof_type = largest->roof_type;
+    // ... unless the parts' faces together make a gable: its two faces
+    // built apart as shed roofs, back to back.
+    std::vector<Polygon3> faces;
+    for (const Building& part : b.parts)
+      for (const Surface& surface : part.surfaces)
+        if (surface.type == SurfaceType::kRoof)
+          faces.insert(faces.end(), surface.polygons.begin(), surface.polygons.end());
+    if (ClassifyRoofType(faces) == roof_type::kGabled) b.roof_type = roof_type::kGabled;
     b.measured_height = b.RoofTopZ() - b.GroundZ();
     if (!outlines.empty()) {
       std::string& outline = b.string_attributes["outline"];
@@ -1220,6 +1314,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
                              : "");
     res.model.buildings.push_back(std::move(b));
   }
+  if (footprints.empty() && o.join_gable_halves) JoinGableHalves(res.model.buildings, o, &join_key);
   JoinParts(join_key, !footprints.empty(), &res);
   // Input planes, not their pieces (cut at footprints or party walls).
   for (const std::string& b : res.plane_building) res.planes_used += !b.empty();

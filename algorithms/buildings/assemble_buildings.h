@@ -181,7 +181,8 @@ struct AssemblyOptions {
   // attributes of the whole (building_parts, summed roof_planes,
   // supporting_lines, reliability and footprint_m2, photometric_score over
   // all faces, the parts' outline values joined by "; ", the roof type of
-  // its largest part, the height of the whole); a footprint
+  // its largest part, or gabled where the parts' faces together make a
+  // gable, the height of the whole); a footprint
   // roofed by one solid stays a plain building.
   // false: each solid is a building of its own, labelled with the id.
   bool join_parts_per_footprint = true;
@@ -193,6 +194,15 @@ struct AssemblyOptions {
   // stay buildings of their own: joined too, they made a terraced row one
   // building and cost 60 correct roof types over 30 runs (session 23).
   bool join_parts_per_group = true;
+  // ... and two shed-roof solids of one adjacency group that meet back to
+  // back at a common ridge (slopes facing apart within 20 deg, ridge
+  // heights within gable_ridge_max_step_m and gable_ridge_max_offset_m
+  // apart in plan, overlapping over half the shorter ridge): the two faces
+  // of one gable, built apart when the lower envelope of a row hid one of
+  // them. They become the parts of one building whose roof type is gabled.
+  bool join_gable_halves = true;
+  double gable_ridge_max_step_m = 0.3;
+  double gable_ridge_max_offset_m = 0.5;
   // Border lines: a supporting line within border_max_offset_m of an edge
   // of the outline (the convex hull of the patches) and within
   // border_max_angle_deg of it, over at least half its length, moves that

@@ -919,4 +919,32 @@ TEST(ClassifyRoofType, TrianglesWithSnappingVerticesAreTriangles) {
   EXPECT_EQ(ClassifyRoofType(roof(1, 0.03)), roof_type::kHipped);
 }
 
+// A row of one eave height: a shed roof rising 15 deg beside a 35 deg gable.
+// The shed's plane runs below the gable's faces, so the lower envelope of
+// the row hides the gable; the two faces must still end in one gabled
+// building.
+TEST(AssembleBuildings, AGableBesideAShedRoofStaysOneGabledBuilding) {
+  const double ridge_z = 6 + 5 * std::tan(35 * M_PI / 180);
+  const std::vector<RoofPlaneHypothesis> row = {
+      Hyp(SlopedPlane({0, 0, 6}, 15, -90), {{0, 0}, {6, 0}, {6, 10}, {0, 10}}),
+      Hyp(SlopedPlane({6, 5, ridge_z}, 35, -90), {{6, 0}, {16, 0}, {16, 5}, {6, 5}}),
+      Hyp(SlopedPlane({6, 5, ridge_z}, 35, 90), {{6, 5}, {16, 5}, {16, 10}, {6, 10}})};
+  const AssemblyResult r = AssembleBuildings(row, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 2u);
+  ExpectAllValid(r);
+  const Building& shed = r.model.buildings[0];
+  const Building& gable = r.model.buildings[1];
+  EXPECT_EQ(shed.roof_type, roof_type::kMonopitch);
+  EXPECT_EQ(gable.roof_type, roof_type::kGabled);
+  ASSERT_EQ(gable.parts.size(), 2u);
+  for (const Building& part : gable.parts) EXPECT_EQ(part.roof_type, roof_type::kMonopitch);
+  EXPECT_NEAR(gable.measured_height, ridge_z, 1e-6);
+  // Without the join the envelope's split leaves three shed roofs.
+  AssemblyOptions apart;
+  apart.join_gable_halves = false;
+  const AssemblyResult a = AssembleBuildings(row, Flat(0), apart);
+  ASSERT_EQ(a.model.buildings.size(), 3u);
+  for (const Building& b : a.model.buildings) EXPECT_EQ(b.roof_type, roof_type::kMonopitch);
+}
+
 }  // namespace roofsweep
