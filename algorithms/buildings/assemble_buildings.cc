@@ -737,14 +737,13 @@ std::optional<PartyCut> FindPartyCut(const std::vector<RoofPlaneHypothesis>& pla
     if (g.norm() < std::sin(o.party_min_slope_deg * kDeg) || p.patch.size() < 3) continue;
     const Eigen::Vector2d fall = g.normalized(), across(-fall.y(), fall.x());
     const Ring2 near = GrowConvex(p.patch, o.adjacency_gap_m);
-    std::vector<std::array<Eigen::Vector2d, 2>> marks = p.lines_xy;
-    marks.insert(marks.end(), p.colour_breaks.begin(), p.colour_breaks.end());
-    for (size_t li = 0; li < marks.size(); ++li) {
-      const auto& l = marks[li];
+    const size_t n_lines = p.lines_xy.size();
+    for (size_t li = 0; li < n_lines + p.colour_breaks.size(); ++li) {
       // A colour break alone may be the end of a patch that reaches past
       // its roof (onto the ground or a lower neighbour): it cuts only where
       // another face shows the wall too.
-      const bool from_colour = li >= p.lines_xy.size();
+      const bool from_colour = li >= n_lines;
+      const auto& l = from_colour ? p.colour_breaks[li - n_lines] : p.lines_xy[li];
       const Eigen::Vector2d d = l[1] - l[0];
       const double len = d.norm();
       if (len < 1e-6 || std::abs(d.dot(fall)) < cos_max * len) continue;
@@ -828,14 +827,15 @@ std::vector<std::vector<int>> ConnectedPieces(const std::vector<int>& active,
   return pieces;
 }
 
-// The solids with one key become the parts of one building (an empty key
-// stands alone). With footprints the key is the footprint's id: the solids
-// built over one footprint (wings or units at different heights, pieces
-// split where one envelope could not roof them) are one building carrying
-// the id, as a cadastre's user counts and joins them; the pieces of a
-// multipolygon footprint share its id and so its building. Without, it is
-// building_group. Top-level ids run in order; parts are
-// "<building id>_p<k>"; `plane_building` follows.
+// The roof polygons of one solid.
+std::vector<Polygon3> RoofFaces(const Building& solid) {
+  std::vector<Polygon3> roofs;
+  for (const Surface& s : solid.surfaces)
+    if (s.type == SurfaceType::kRoof)
+      roofs.insert(roofs.end(), s.polygons.begin(), s.polygons.end());
+  return roofs;
+}
+
 // The ridge of a single-face (shed) roof: its highest vertices.
 struct ShedRidge {
   bool valid = false;
@@ -846,10 +846,7 @@ struct ShedRidge {
 
 ShedRidge RidgeOfShed(const Building& solid) {
   ShedRidge r;
-  std::vector<Polygon3> roofs;
-  for (const Surface& s : solid.surfaces)
-    if (s.type == SurfaceType::kRoof)
-      roofs.insert(roofs.end(), s.polygons.begin(), s.polygons.end());
+  const std::vector<Polygon3> roofs = RoofFaces(solid);
   if (ClassifyRoofType(roofs) != roof_type::kMonopitch) return r;
   const Polygon3* face = &roofs.front();
   for (const Polygon3& p : roofs)
@@ -922,6 +919,14 @@ void JoinGableHalves(const std::vector<Building>& solids, const AssemblyOptions&
   }
 }
 
+// The solids with one key become the parts of one building (an empty key
+// stands alone). With footprints the key is the footprint's id: the solids
+// built over one footprint (wings or units at different heights, pieces
+// split where one envelope could not roof them) are one building carrying
+// the id, as a cadastre's user counts and joins them; the pieces of a
+// multipolygon footprint share its id and so its building. Without, it is
+// building_group. Top-level ids run in order; parts are
+// "<building id>_p<k>"; `plane_building` follows.
 void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_keys,
                AssemblyResult* res) {
   std::vector<Building> solids = std::move(res->model.buildings);
@@ -977,10 +982,10 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
     // ... unless the parts' faces together make a gable: its two faces
     // built apart as shed roofs, back to back.
     std::vector<Polygon3> faces;
-    for (const Building& part : b.parts)
-      for (const Surface& surface : part.surfaces)
-        if (surface.type == SurfaceType::kRoof)
-          faces.insert(faces.end(), surface.polygons.begin(), surface.polygons.end());
+    for (const Building& part : b.parts) {
+      const std::vector<Polygon3> roofs = RoofFaces(part);
+      faces.insert(faces.end(), roofs.begin(), roofs.end());
+    }
     if (ClassifyRoofType(faces) == roof_type::kGabled) b.roof_type = roof_type::kGabled;
     b.measured_height = b.RoofTopZ() - b.GroundZ();
     if (!outlines.empty()) {

@@ -17,19 +17,26 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 
 struct Sample {
-  double u = 0, t = 0;  // along the face (horizontal) and down its fall line
+  double t = 0;    // down the fall line
+  int column = 0;  // along the face, in steps of spacing_m from its start
   cv::Vec3f lab;
 };
 
-// Median of each L*a*b* channel over `idx` (reordered).
-cv::Vec3f MedianLab(const std::vector<Sample>& s, std::vector<int>* idx, std::vector<float>* work) {
+// The median of `v` (reordered).
+float Median(std::vector<float>* v) {
+  const auto mid = v->begin() + v->size() / 2;
+  std::nth_element(v->begin(), mid, v->end());
+  return *mid;
+}
+
+// Median of each L*a*b* channel over `idx`.
+cv::Vec3f MedianLab(const std::vector<Sample>& s, const std::vector<int>& idx,
+                    std::vector<float>* work) {
   cv::Vec3f m;
   for (int c = 0; c < 3; ++c) {
     work->clear();
-    for (int i : *idx) work->push_back(s[i].lab[c]);
-    auto mid = work->begin() + work->size() / 2;
-    std::nth_element(work->begin(), mid, work->end());
-    m[c] = *mid;
+    for (int i : idx) work->push_back(s[i].lab[c]);
+    m[c] = Median(work);
   }
   return m;
 }
@@ -41,30 +48,24 @@ cv::Vec3f MeanLab(const std::vector<Sample>& s, const std::vector<int>& idx) {
 }
 
 // The samples of one patch on the plane, coloured by the median over the
-// views that see them.
+// views that see them: `columns` columns along the face from u0, rows down
+// it from t0.
 std::vector<Sample> ColourSamples(const Block& block, const std::vector<cv::Mat>& images,
                                   const RoofPlaneHypothesis& p, const Eigen::Vector2d& across,
-                                  const Eigen::Vector2d& fall, const ColourBreakOptions& o) {
-  double u0 = 1e300, u1 = -1e300, t0 = 1e300, t1 = -1e300;
-  for (const auto& q : p.patch) {
-    u0 = std::min(u0, q.dot(across)), u1 = std::max(u1, q.dot(across));
-    t0 = std::min(t0, q.dot(fall)), t1 = std::max(t1, q.dot(fall));
-  }
-  const int nu = static_cast<int>((u1 - u0) / o.spacing_m) + 1;
-  const int nt = static_cast<int>((t1 - t0) / o.spacing_m) + 1;
+                                  const Eigen::Vector2d& fall, double u0, int columns, double t0,
+                                  int rows, const ColourBreakOptions& o) {
   std::vector<Sample> samples;
   std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nt; ++j) {
+  for (int i = 0; i < columns; ++i)
+    for (int j = 0; j < rows; ++j) {
       const double u = u0 + (i + 0.5) * o.spacing_m, t = t0 + (j + 0.5) * o.spacing_m;
       const Eigen::Vector2d x = u * across + t * fall;
       if (!InsideConvex(p.patch, x)) continue;
-      samples.push_back({u, t, {}});
+      samples.push_back({t, i, {}});
       points.emplace_back(x.x(), x.y(), PlaneZ(p.plane, x.x(), x.y()));
     }
   // All (sample, view) colours of the patch go through one conversion.
   std::vector<int> owner;
-  cv::Mat rgb(0, 1, CV_32FC3);
   std::vector<cv::Vec3f> values;
   for (size_t v = 0; v < block.views.size(); ++v) {
     const cv::Mat& img = images[v];
@@ -101,9 +102,7 @@ std::vector<Sample> ColourSamples(const Block& block, const std::vector<cv::Mat>
     for (int ch = 0; ch < 3; ++ch) {
       work.clear();
       for (const auto& x : c) work.push_back(x[ch]);
-      auto mid = work.begin() + work.size() / 2;
-      std::nth_element(work.begin(), mid, work.end());
-      s.lab[ch] = *mid;
+      s.lab[ch] = Median(&work);
     }
     out.push_back(s);
   }
@@ -117,17 +116,19 @@ std::vector<std::array<Eigen::Vector2d, 2>> BreaksOf(const Block& block,
   const Eigen::Vector2d g = p.plane.head<2>();
   if (p.patch.size() < 3 || g.norm() < std::sin(o.min_slope_deg * kDeg)) return {};
   const Eigen::Vector2d fall = g.normalized(), across(-fall.y(), fall.x());
-  double u0 = 1e300, u1 = -1e300;
-  for (const auto& q : p.patch) u0 = std::min(u0, q.dot(across)), u1 = std::max(u1, q.dot(across));
+  double u0 = 1e300, u1 = -1e300, t0 = 1e300, t1 = -1e300;
+  for (const auto& q : p.patch) {
+    u0 = std::min(u0, q.dot(across)), u1 = std::max(u1, q.dot(across));
+    t0 = std::min(t0, q.dot(fall)), t1 = std::max(t1, q.dot(fall));
+  }
   if (u1 - u0 < 2 * o.min_side_m) return {};
-  const std::vector<Sample> s = ColourSamples(block, images, p, across, fall, o);
-  if (s.empty()) return {};
-  // Columns of samples along the face.
   const int ncol = static_cast<int>((u1 - u0) / o.spacing_m) + 1;
+  const int nrow = static_cast<int>((t1 - t0) / o.spacing_m) + 1;
+  const std::vector<Sample> s =
+      ColourSamples(block, images, p, across, fall, u0, ncol, t0, nrow, o);
+  if (s.empty()) return {};
   std::vector<std::vector<int>> column(ncol);
-  for (size_t k = 0; k < s.size(); ++k)
-    column[std::clamp(static_cast<int>((s[k].u - u0) / o.spacing_m), 0, ncol - 1)].push_back(
-        static_cast<int>(k));
+  for (size_t k = 0; k < s.size(); ++k) column[s[k].column].push_back(static_cast<int>(k));
   const int half_gap = static_cast<int>(std::lround(0.5 * o.gap_m / o.spacing_m));
   const int win = std::max(1, static_cast<int>(std::lround(o.window_m / o.spacing_m)));
   const int side = static_cast<int>(std::lround(o.min_side_m / o.spacing_m));
@@ -156,17 +157,14 @@ std::vector<std::array<Eigen::Vector2d, 2>> BreaksOf(const Block& block,
     for (int b = 0; b < bands && worst > 0; ++b) {
       const double b0 = lo + (hi - lo) * b / bands, b1 = lo + (hi - lo) * (b + 1) / bands;
       left.clear(), right.clear();
-      for (int k : near) {
-        if (s[k].t < b0 || s[k].t > b1) continue;
-        const int col = std::clamp(static_cast<int>((s[k].u - u0) / o.spacing_m), 0, ncol - 1);
-        (col < c ? left : right).push_back(k);
-      }
+      for (int k : near)
+        if (s[k].t >= b0 && s[k].t <= b1) (s[k].column < c ? left : right).push_back(k);
       if (static_cast<int>(left.size()) < o.min_samples ||
           static_cast<int>(right.size()) < o.min_samples) {
         worst = 0;
         break;
       }
-      const cv::Vec3f a = MedianLab(s, &left, &work), d = MedianLab(s, &right, &work);
+      const cv::Vec3f a = MedianLab(s, left, &work), d = MedianLab(s, right, &work);
       worst = std::min(worst, static_cast<double>(cv::norm(a - d)));
       worst_mean =
           std::min(worst_mean, static_cast<double>(cv::norm(MeanLab(s, left) - MeanLab(s, right))));
