@@ -16,8 +16,14 @@ struct GroupingOptions {
   // the plane's, both end points of its line lie within max_distance_m of
   // the plane, and its patch comes within max_gap_m of the plane's patch in
   // plan view (coplanar faces of different buildings stay apart).
+  // max_distance_m is about 2.5 times the height error of a matched line at
+  // 5 cm GSD and base-to-height 0.3. At 0.25 m, roofs 0.15-0.25 m apart
+  // (neighbours in a row, a renewed roof beside an old one) joined, and the
+  // refit tilted the plane between them: from matched lines over 30 runs
+  // (session 25), 0.15 m raised plane quality by 0.56 +- 0.20 and building
+  // quality by 0.82 +- 0.26 points; 0.10 m gained less.
   double max_angle_deg = 5.0;
-  double max_distance_m = 0.25;
+  double max_distance_m = 0.15;
   double max_gap_m = 1.0;
   // A half-plane's patch is the strip from its line to the sweep's reach
   // (HalfPlane::extent_m), at least min_extent_m wide.

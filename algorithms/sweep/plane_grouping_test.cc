@@ -114,6 +114,33 @@ TEST(PlaneGrouping, FarApartCoplanarFacesStaySeparateAndConflictsResolve) {
   EXPECT_NE(rejected[0].find("line 1"), std::string::npos) << rejected[0];
 }
 
+// Two flat roofs of a row, 8 m deep, side by side along x; the eastern one
+// `step` m higher. Each roof's front and back eaves carry a half-plane into
+// the roof.
+GroupingResult TwoFlatRoofs(double step) {
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  const std::vector<SweepLine> lines = {{{{0, 0, 6}, {10, 0, 6}}, {}},
+                                        {{{0, 8, 6}, {10, 8, 6}}, {}},
+                                        {{{10.5, 0, 6 + step}, {20, 0, 6 + step}}, {}},
+                                        {{{10.5, 8, 6 + step}, {20, 8, 6 + step}}, {}}};
+  const std::vector<HalfPlane> hps = {
+      Accepted(lines, 0, +1, up, 4.0), Accepted(lines, 1, -1, up, 4.0),
+      Accepted(lines, 2, +1, up, 4.0, 0.55), Accepted(lines, 3, -1, up, 4.0, 0.55)};
+  return GroupHalfPlanes(lines, hps);
+}
+
+TEST(PlaneGrouping, FlatRoofsAStepApartStaySeparate) {
+  // A 0.2 m step is four times the height error of a matched line: two roofs.
+  GroupingResult r = TwoFlatRoofs(0.2);
+  ASSERT_EQ(r.planes.size(), 2u);
+  EXPECT_NEAR(-r.planes[0].plane.w() / r.planes[0].plane.z(), 6.0, 1e-6);
+  EXPECT_NEAR(-r.planes[1].plane.w() / r.planes[1].plane.z(), 6.2, 1e-6);
+  // Lines 0.08 m apart are one roof measured twice.
+  r = TwoFlatRoofs(0.08);
+  ASSERT_EQ(r.planes.size(), 1u);
+  EXPECT_EQ(r.planes[0].lines.size(), 4u);
+}
+
 TEST(PlaneGrouping, DerivedPlanesYieldToFoundOnesInConflicts) {
   RoofPlaneHypothesis found, derived;
   found.id = "found";
