@@ -266,13 +266,32 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   } else {
     hp.accepted = true;
   }
-  hp.candidate = hp.accepted || (hp.views >= o.min_views && k0 > 0 && k0 < samples - 1 &&
-                                 hp.similarity >= o.candidate_min_similarity &&
-                                 hp.curvature <= -o.candidate_min_curvature);
+  hp.candidate_shape = hp.views >= o.min_views && k0 > 0 && k0 < samples - 1 &&
+                       hp.curvature <= -o.candidate_min_curvature;
+  {
+    std::vector<double> p = hp.profile;
+    std::nth_element(p.begin(), p.begin() + p.size() / 2, p.end());
+    hp.peak_ratio = hp.similarity / std::max(p[p.size() / 2], 1e-3);
+  }
+  // SweepHalfPlanes settles the candidates once the block's threshold is known.
+  hp.candidate = hp.accepted;
   return hp;
 }
 
 }  // namespace
+
+double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOptions& o) {
+  if (o.calibration_peak_ratio <= 0) return o.candidate_min_similarity;
+  std::vector<double> clear;
+  for (const HalfPlane& hp : sides)
+    if (hp.candidate_shape && hp.peak_ratio >= o.calibration_peak_ratio)
+      clear.push_back(hp.similarity);
+  if (static_cast<int>(clear.size()) < std::max(1, o.calibration_min_sides))
+    return o.candidate_min_similarity;
+  std::nth_element(clear.begin(), clear.begin() + clear.size() / 2, clear.end());
+  const double scale = std::min(1.0, clear[clear.size() / 2] / o.calibration_reference_similarity);
+  return std::max(o.candidate_floor_similarity, o.candidate_min_similarity * scale);
+}
 
 std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
                                        const std::vector<SweepLine>& lines,
@@ -348,6 +367,9 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv:
           SweepSide(block, textures, projected, lines, line, side, options);
     });
   }
+  const double threshold = CandidateThreshold(out, options);
+  for (HalfPlane& hp : out)
+    hp.candidate = hp.accepted || (hp.candidate_shape && hp.similarity >= threshold);
   ReportOrCancel(progress, 1.0, "sweep: half-planes");
   return out;
 }

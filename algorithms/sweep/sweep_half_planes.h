@@ -55,12 +55,23 @@ struct HalfPlane {
   // to propose a plane that §5's verification over the whole patch then
   // confirms or rejects. Every accepted half-plane is a candidate.
   bool candidate = false;
+  // Sim(theta*) over the median of `profile`: how far the peak stands out,
+  // whatever the image noise (SweepOptions::calibration_peak_ratio).
+  double peak_ratio = 0;
+  // An interior maximum with enough views and curvature: a candidate once
+  // Sim reaches the block's calibrated threshold.
+  bool candidate_shape = false;
   std::string
       reason;  // why not accepted; empty when accepted  // why not accepted; empty when accepted
   // Sim at the coarse samples theta_min, theta_min + step, ... (all points
   // and views, before outlier removal and the valid-view test).
   std::vector<double> profile;
 };
+
+// The Sim a side with a candidate's shape needs to be a candidate, at the
+// image quality of the block these sides were swept from
+// (SweepOptions::calibration_peak_ratio).
+double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOptions& options);
 
 // Sweeps both sides of every line: two results per line, at 2 i (side +1)
 // and 2 i + 1 (side -1). `images`: one per block view, CV_32FC3 RGB or

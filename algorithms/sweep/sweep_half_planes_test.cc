@@ -74,6 +74,38 @@ TEST(SweepHalfPlanes, GableRidgeFindsBothPitches) {
   }
 }
 
+// Under heavy sensor noise a textured face's Sim stays low (0.09 here
+// against 0.64 at a quarter of the noise), but its peak still stands six
+// times above the median of its profile. Calibrated on the block's clear
+// peaks (here a handful of sides instead of 30), the candidate threshold
+// falls with the noise: the face is a candidate, at the right angle. The
+// untextured face on the other side is not.
+TEST(SweepHalfPlanes, TheCandidateThresholdFallsWithTheNoise) {
+  TestScene scene;
+  scene.quads = {Face(1, 30, 6, true, 3, 3), Face(-1, 40, 6, false, 4, 3)};
+  scene.noise_sigma = 0.08;  // 20 times the default
+  const std::vector<Segment3> eaves = {Eave(scene.quads[0]), Eave(scene.quads[1])};
+  const Block block = sweep_test::FourViewBlock();
+  SweepOptions o;
+  o.calibration_min_sides = 1;
+  const auto r = Sweep(scene, block, o, eaves);
+  const HalfPlane& face = SideOf(r, 1);
+  EXPECT_LT(face.similarity, o.candidate_min_similarity);
+  EXPECT_GE(face.peak_ratio, o.calibration_peak_ratio);
+  EXPECT_TRUE(face.candidate) << face.reason;
+  EXPECT_FALSE(face.accepted);
+  EXPECT_NEAR(face.theta_deg, -30.0, 2.0);
+  EXPECT_FALSE(SideOf(r, -1).candidate);
+  SweepOptions fixed = o;
+  fixed.calibration_peak_ratio = 0;
+  EXPECT_FALSE(SideOf(Sweep(scene, block, fixed, eaves), 1).candidate);
+  // At the default noise the threshold stays the fixed one.
+  scene.noise_sigma = TestScene().noise_sigma;
+  const auto clean = Sweep(scene, block, o, eaves);
+  EXPECT_TRUE(SideOf(clean, 1).accepted);
+  EXPECT_FALSE(SideOf(clean, -1).candidate);
+}
+
 // An untextured face gives no reliable maximum. The faces run on beyond the
 // line: an untextured face's own outline (its verges against the ground)
 // is texture on the plane and would rightly support it. The eaves are

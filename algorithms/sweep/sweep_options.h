@@ -41,6 +41,21 @@ struct SweepOptions {
   // for the paper's behaviour.
   double candidate_min_similarity = 0.2;
   double candidate_min_curvature = 1.0;
+  // Sim's height falls with image noise, haze and low contrast; its shape
+  // does not. From true edges (rs_sweep_sim_eval, seed 1) the median Sim of
+  // true faces is 0.40 on `realistic` and 0.13 on `hard`, yet their peaks
+  // stand a median 4.8 times above the median of their coarse profile on
+  // both (sides without a face: 3.0-3.4 times). So the block calibrates the
+  // candidate threshold on its own clear peaks: the sides whose maximum
+  // stands calibration_peak_ratio times above their profile (at least
+  // calibration_min_sides of them). Their median Sim over
+  // calibration_reference_similarity (that median on `realistic`) scales
+  // candidate_min_similarity down, never up, and not below
+  // candidate_floor_similarity. calibration_peak_ratio 0 turns it off.
+  double calibration_peak_ratio = 5.0;
+  int calibration_min_sides = 30;
+  double calibration_reference_similarity = 0.32;
+  double candidate_floor_similarity = 0.05;
   // A side needs at least this many points of interest and this many views
   // besides the reference. One other view suffices: near the block's edges
   // a roof is seen by two images of one strip only (half the `realistic`

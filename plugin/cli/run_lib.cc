@@ -331,10 +331,12 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   const std::vector<HalfPlane> hps = SweepHalfPlanes(block, images, lines, r.sweep, sweep_progress);
   out.sides = static_cast<int>(hps.size());
   for (const HalfPlane& h : hps) out.accepted += h.accepted;
-  out.stages.push_back({"half-plane sweep",
-                        StrFormat("%d sides, %d accepted (%d lines near the ground)", out.sides,
-                                  out.accepted, near_ground),
-                        Since(t0)});
+  out.stages.push_back(
+      {"half-plane sweep",
+       StrFormat("%d sides, %d accepted, candidates from Sim %.2f (%d lines "
+                 "near the ground)",
+                 out.sides, out.accepted, CandidateThreshold(hps, r.sweep), near_ground),
+       Since(t0)});
 
   const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
   if (!half_plane_path.empty()) {
