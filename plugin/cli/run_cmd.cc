@@ -105,7 +105,8 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
   ArgParser p("sweep",
               "Runs the pipeline up to the half-plane sweep (Baillard & Zisserman 2000, section 3) "
               "and writes every swept line side as a polygon on its best plane, with the angle, "
-              "similarity, curvature and why it was not accepted, for inspection.");
+              "similarity, curvature, how far the peak stands out, whether it proposes a plane "
+              "(candidate) and why it was not accepted, for inspection.");
   p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
       .Option("-o", &r.output, "FILE", "output with a MultiPolygonZ layer half_planes (.gpkg, ...)")
       .Option("-of|-f", &r.format, "FORMAT", "GDAL vector driver, when the extension does not tell")

@@ -356,12 +356,15 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
       f.integers["line"] = h.line;
       f.integers["side"] = h.side;
       f.integers["accepted"] = h.accepted;
+      // The looser test that lets the side propose a plane (SweepOptions).
+      f.integers["candidate"] = h.candidate;
       f.integers["points"] = h.points;
       f.integers["views"] = h.views;
       f.reals["theta_deg"] = h.theta_deg;
       f.reals["slope_deg"] = std::acos(std::clamp(h.plane[2], -1.0, 1.0)) * 180 / M_PI;
       f.reals["similarity"] = h.similarity;
       f.reals["curvature"] = h.curvature;
+      f.reals["peak_ratio"] = h.peak_ratio;
       f.reals["extent_m"] = h.extent_m;
       f.strings["reason"] = h.reason;
       f.strings["reference_view"] = block.views[h.reference_view].name;

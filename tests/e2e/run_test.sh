@@ -123,6 +123,12 @@ import sqlite3, sys
 c = sqlite3.connect(sys.argv[1])
 n, acc = c.execute("select count(*), sum(accepted) from half_planes").fetchone()
 assert n > 0 and acc is not None, (n, acc)
+# Every accepted side is a candidate; every candidate has a swept profile.
+bad = c.execute("select count(*) from half_planes where accepted = 1 and candidate = 0").fetchone()[0]
+assert bad == 0, bad
+cand, unset = c.execute(
+    "select sum(candidate), sum(candidate = 1 and not peak_ratio > 0) from half_planes").fetchone()
+assert cand >= acc and unset == 0, (cand, acc, unset)
 PY
 }
 
