@@ -20,6 +20,12 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
+// The element at index size / 2 once sorted (the upper median); v non-empty.
+double UpperMedian(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
 struct Projected {
   bool front = false;      // both end points in front of the camera
   bool inside = false;     // a part of at least min_visible_px inside the image (with the margin)
@@ -197,9 +203,7 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   sim.Reduce(at_coarse_max, &score);
   {
     // The median bounds the threshold so that at most half is dropped.
-    std::vector<double> sorted = score;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double threshold = std::min(o.outlier_min_score, sorted[sorted.size() / 2]);
+    const double threshold = std::min(o.outlier_min_score, UpperMedian(score));
     std::vector<bool> active(score.size());
     for (size_t i = 0; i < score.size(); ++i) active[i] = score[i] >= threshold;
     sim.SetActive(active);
@@ -268,11 +272,7 @@ HalfPlane SweepSide(const Block& block, const std::vector<ViewTexture>& textures
   }
   hp.candidate_shape = hp.views >= o.min_views && k0 > 0 && k0 < samples - 1 &&
                        hp.curvature <= -o.candidate_min_curvature;
-  {
-    std::vector<double> p = hp.profile;
-    std::nth_element(p.begin(), p.begin() + p.size() / 2, p.end());
-    hp.peak_ratio = hp.similarity / std::max(p[p.size() / 2], 1e-3);
-  }
+  hp.peak_ratio = hp.similarity / std::max(UpperMedian(hp.profile), 1e-3);
   // SweepHalfPlanes settles the candidates once the block's threshold is known.
   hp.candidate = hp.accepted;
   return hp;
@@ -288,8 +288,7 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
       clear.push_back(hp.similarity);
   if (static_cast<int>(clear.size()) < std::max(1, o.calibration_min_sides))
     return o.candidate_min_similarity;
-  std::nth_element(clear.begin(), clear.begin() + clear.size() / 2, clear.end());
-  const double scale = std::min(1.0, clear[clear.size() / 2] / o.calibration_reference_similarity);
+  const double scale = std::min(1.0, UpperMedian(clear) / o.calibration_reference_similarity);
   return std::max(o.candidate_floor_similarity, o.candidate_min_similarity * scale);
 }
 

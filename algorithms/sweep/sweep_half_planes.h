@@ -61,8 +61,7 @@ struct HalfPlane {
   // An interior maximum with enough views and curvature: a candidate once
   // Sim reaches the block's calibrated threshold.
   bool candidate_shape = false;
-  std::string
-      reason;  // why not accepted; empty when accepted  // why not accepted; empty when accepted
+  std::string reason;  // why not accepted; empty when accepted
   // Sim at the coarse samples theta_min, theta_min + step, ... (all points
   // and views, before outlier removal and the valid-view test).
   std::vector<double> profile;
