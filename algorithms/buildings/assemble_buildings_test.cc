@@ -10,17 +10,10 @@
 #include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/solid_check.h"
+#include "algorithms/buildings/test_planes.h"
 
 namespace roofsweep {
 namespace {
-
-// Plane through point p with the given slope (deg) falling towards azimuth
-// (deg, from +x counter-clockwise).
-Eigen::Vector4d SlopedPlane(const Eigen::Vector3d& p, double slope_deg, double azimuth_deg) {
-  const double s = slope_deg * M_PI / 180, a = azimuth_deg * M_PI / 180;
-  const Eigen::Vector3d n(std::sin(s) * std::cos(a), std::sin(s) * std::sin(a), std::cos(s));
-  return {n.x(), n.y(), n.z(), -n.dot(p)};
-}
 
 RoofPlaneHypothesis Hyp(const Eigen::Vector4d& plane, Ring2 patch, double score = 1) {
   RoofPlaneHypothesis h;

@@ -31,7 +31,7 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
-  bool no_mirror = false, no_colour_breaks = false;
+  bool no_mirror = false, no_colour_breaks = false, no_growth = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -78,7 +78,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "wall)")
       .Flag("-no_mirror_faces", &no_mirror,
             "do not propose, beyond a ridge line, the mirror image of a roof face found from "
-            "one side of it only (completion by symmetry, verified like any plane)");
+            "one side of it only (completion by symmetry, verified like any plane)")
+      .Flag("-no_footprint_growth", &no_growth,
+            "with footprints, do not grow a sloped face seen over part of its footprint along "
+            "its contour lines by the strips of the footprint the images confirm");
   MatchFlags flags;
   AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
@@ -87,6 +90,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   if (!p.Parse(args)) return 0;
   r.line_planes = !sweep_only;
   r.mirror_faces = !no_mirror;
+  r.footprint_growth = !no_growth;
   r.colour_breaks = !no_colour_breaks;
   flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);

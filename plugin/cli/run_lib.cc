@@ -487,6 +487,35 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
          Since(t0)});
   }
 
+  // Faces seen over part of their footprint grow along it where the
+  // images confirm the strip beyond the patch; the plane, its lines and its
+  // score stay as they are (the strips are no evidence in conflicts).
+  if (!footprints.empty() && r.footprint_growth) {
+    t0 = Clock::now();
+    std::vector<PatchExtension> ext = ExtensionsAlongFootprints(roof_planes, footprints, r.growth);
+    std::vector<RoofPlaneHypothesis> strips;
+    for (const PatchExtension& e : ext) strips.push_back(e.strip);
+    SubProgress none(progress, 0.99, 0.99);
+    const std::vector<PlaneVerification> checks =
+        VerifyPlanes(block, images, strips, r.verify, none);
+    std::vector<std::vector<Eigen::Vector2d>> extra(roof_planes.size());
+    size_t confirmed = 0;
+    for (size_t k = 0; k < ext.size(); ++k) {
+      if (!checks[k].accepted) continue;
+      const auto& patch = checks[k].patch.empty() ? strips[k].patch : checks[k].patch;
+      extra[ext[k].plane].insert(extra[ext[k].plane].end(), patch.begin(), patch.end());
+      ++confirmed;
+    }
+    for (size_t i = 0; i < roof_planes.size(); ++i) {
+      if (extra[i].empty()) continue;
+      extra[i].insert(extra[i].end(), roof_planes[i].patch.begin(), roof_planes[i].patch.end());
+      roof_planes[i].patch = ConvexHull(std::move(extra[i]));
+    }
+    out.stages.push_back({"faces grown along footprints",
+                          StrFormat("%zu strips proposed, %zu confirmed", ext.size(), confirmed),
+                          Since(t0)});
+  }
+
   // Footprints that still carry no plane: a flat roof at the height the
   // views agree on best, verified like any plane (garages, sheds and flat
   // roofs whose edges gave too few lines for the sweep).

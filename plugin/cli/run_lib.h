@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/buildings/footprint_growth.h"
 #include "algorithms/buildings/mirror_completion.h"
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
@@ -52,6 +53,11 @@ struct RunRequest {
   // With footprints: a footprint no plane covers gets a flat roof at the
   // height the views agree on best, if the verification confirms it.
   bool footprint_flat_roofs = true;
+  // With footprints: a sloped face seen over part of its footprint grows
+  // along its contour lines by the strips of the footprint beyond its patch
+  // that the verification confirms (ExtensionsAlongFootprints).
+  bool footprint_growth = true;
+  FootprintGrowthOptions growth;
   // Completion by symmetry (MirroredFaces): a pitched face with a ridge
   // line proposes the face beyond the ridge, verified like any plane.
   bool mirror_faces = true;

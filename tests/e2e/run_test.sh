@@ -141,6 +141,8 @@ test_run_with_footprints() {
   expect_ok run_fp run "$SIM" -o "$WORK/fp.gpkg" -footprints "$WORK/fp3857.gpkg" \
     -report "$WORK/fp.json"
   grep -q "3 footprints" "$WORK/stdout.txt" && pass run_fp_read || fail run_fp_read "$(head -c 400 "$WORK/stdout.txt")"
+  grep -Eq "faces grown along footprints +[0-9]+ strips proposed, [0-9]+ confirmed" "$WORK/stdout.txt" \
+    && pass run_fp_growth_stage || fail run_fp_growth_stage "$(grep -i grown "$WORK/stdout.txt")"
   python3 - "$WORK/fp.gpkg" "$SIM/footprints.gpkg" "$WORK/fp.json" <<'PY' && pass run_fp_labels \
     || fail run_fp_labels "buildings not labelled by footprint, or a footprint unaccounted for"
 import json, sqlite3, sys
