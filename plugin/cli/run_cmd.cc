@@ -31,7 +31,7 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
-  bool no_mirror = false, no_colour_breaks = false, no_growth = false;
+  bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -81,7 +81,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "one side of it only (completion by symmetry, verified like any plane)")
       .Flag("-no_footprint_growth", &no_growth,
             "with footprints, do not grow a sloped face seen over part of its footprint along "
-            "its contour lines by the strips of the footprint the images confirm");
+            "its contour lines by the strips of the footprint the images confirm")
+      .Flag("-no_coplanar_merge", &no_merge,
+            "do not merge two roof planes a few degrees apart that meet without a step (one "
+            "face fitted twice), even where the images confirm the merged plane");
   MatchFlags flags;
   AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
@@ -91,6 +94,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.line_planes = !sweep_only;
   r.mirror_faces = !no_mirror;
   r.footprint_growth = !no_growth;
+  r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;
   flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);

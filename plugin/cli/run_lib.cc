@@ -516,6 +516,45 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                           Since(t0)});
   }
 
+  // One face fitted as two planes a few degrees apart: the merged plane
+  // replaces both where the images confirm it about as well as the weaker
+  // of the two.
+  if (r.merge_coplanar) {
+    t0 = Clock::now();
+    const std::vector<PlaneMerge> merges = NearCoplanarMerges(roof_planes, r.merge);
+    std::vector<RoofPlaneHypothesis> proposals;
+    for (const PlaneMerge& m : merges) proposals.push_back(m.merged);
+    SubProgress none(progress, 0.99, 0.99);
+    const std::vector<PlaneVerification> checks =
+        VerifyPlanes(block, images, proposals, r.verify, none);
+    std::vector<char> merged_away(roof_planes.size(), 0);
+    std::vector<RoofPlaneHypothesis> merged;
+    for (size_t k = 0; k < merges.size(); ++k) {
+      const RoofPlaneHypothesis &a = roof_planes[merges[k].a], &b = roof_planes[merges[k].b];
+      if (!checks[k].accepted ||
+          checks[k].score < std::min(a.similarity, b.similarity) - r.merge.min_score_loss)
+        continue;
+      RoofPlaneHypothesis m = std::move(proposals[k]);
+      if (!checks[k].patch.empty()) m.patch = checks[k].patch;
+      m.similarity = checks[k].score;
+      m.score = std::abs(SignedArea(m.patch)) * checks[k].score;
+      merged_away[merges[k].a] = merged_away[merges[k].b] = 1;
+      for (const RoofPlaneHypothesis* p : {&a, &b})
+        out.rejected.push_back(p->id + ": merged into one plane (" + m.id + ")");
+      if (trace) trace->push_back({m, checks[k]});
+      merged.push_back(std::move(m));
+    }
+    const size_t n_merged = merged.size();
+    std::vector<RoofPlaneHypothesis> kept;
+    for (size_t i = 0; i < roof_planes.size(); ++i)
+      if (!merged_away[i]) kept.push_back(std::move(roof_planes[i]));
+    for (RoofPlaneHypothesis& m : merged) kept.push_back(std::move(m));
+    roof_planes = std::move(kept);
+    out.stages.push_back({"near-coplanar planes merged",
+                          StrFormat("%zu pairs proposed, %zu merged", merges.size(), n_merged),
+                          Since(t0)});
+  }
+
   // Footprints that still carry no plane: a flat roof at the height the
   // views agree on best, verified like any plane (garages, sheds and flat
   // roofs whose edges gave too few lines for the sweep).

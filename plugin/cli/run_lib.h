@@ -11,6 +11,7 @@
 #include "algorithms/matching/match_options.h"
 #include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
+#include "algorithms/sweep/merge_coplanar_neighbours.h"
 #include "algorithms/sweep/plane_grouping.h"
 #include "algorithms/sweep/sweep_options.h"
 #include "algorithms/sweep/verify_planes.h"
@@ -58,6 +59,11 @@ struct RunRequest {
   // that the verification confirms (ExtensionsAlongFootprints).
   bool footprint_growth = true;
   FootprintGrowthOptions growth;
+  // Two planes a few degrees apart that meet without a step are merged
+  // where the verification confirms the merged plane
+  // (NearCoplanarMerges).
+  bool merge_coplanar = true;
+  NearCoplanarMergeOptions merge;
   // Completion by symmetry (MirroredFaces): a pitched face with a ridge
   // line proposes the face beyond the ridge, verified like any plane.
   bool mirror_faces = true;

@@ -16,6 +16,8 @@ test_run_writes_valid_closed_lod2() {
   expect_ok run_gml run "$SIM" -o "$WORK/b.gml" -report "$WORK/report.json" -lines3d "$WORK/l.gpkg" \
     -half_planes "$WORK/hp.gpkg" -planes "$WORK/planes.gpkg"
   grep -q "^half-plane sweep" "$WORK/stdout.txt" || fail run_stage_table "no stage table"
+  grep -Eq "^near-coplanar planes merged +[0-9]+ pairs proposed, [0-9]+ merged" "$WORK/stdout.txt" \
+    && pass run_merge_stage || fail run_merge_stage "$(grep -i coplanar "$WORK/stdout.txt")"
   local n
   n=$(grep -c "<bldg:Building " "$WORK/b.gml" || true)
   [[ $n -gt 0 ]] && pass run_builds_buildings || fail run_builds_buildings "no building in b.gml"

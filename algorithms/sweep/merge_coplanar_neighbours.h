@@ -1,0 +1,48 @@
+#pragma once
+
+#include <vector>
+
+#include "algorithms/buildings/assemble_buildings.h"
+
+namespace roofsweep {
+
+// Options of NearCoplanarMerges. Lengths in metres.
+struct NearCoplanarMergeOptions {
+  // Two planes are candidates when their normals are within max_angle_deg,
+  // their patches come within max_gap_m of each other, and where they meet
+  // (the vertices of each patch within meet_m of the other patch) their
+  // heights differ by at most max_step_m: one face fitted twice, not a
+  // ridge (the faces of a gable differ by twice their slope) nor a step
+  // between two roofs.
+  double max_angle_deg = 10.0;
+  double max_gap_m = 0.5;
+  double meet_m = 1.0;
+  double max_step_m = 0.3;
+  // Samples of the patches on a grid of this spacing fit the merged plane,
+  // so that each part weighs by its area.
+  double sample_spacing_m = 0.5;
+  // The caller keeps a merge when the verification accepts it and its
+  // score is at most min_score_loss below the lower of the two planes'.
+  double min_score_loss = 0.05;
+};
+
+// One proposed merge of planes[a] and planes[b].
+struct PlaneMerge {
+  int a = -1, b = -1;
+  RoofPlaneHypothesis merged;  // refitted plane over the hull of both patches
+};
+
+// One face often comes out as two planes a few degrees apart: two sets of
+// its lines that the grouping kept apart (more than GroupingOptions::
+// max_distance_m or max_angle_deg between them), each with a patch over
+// part of the face, and the assembly then draws a crease between them, or
+// neither covers half of the face. Proposes, strongest pair first (summed
+// score) and each plane in one pair at most, the merged plane: the
+// orthogonal regression over both patches sampled on their own planes, its
+// patch the hull of both, its lines and marks the union, derived or height
+// from lines only when both are. A proposal only: the caller verifies it.
+// Deterministic.
+std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis>& planes,
+                                           const NearCoplanarMergeOptions& options = {});
+
+}  // namespace roofsweep
