@@ -11,6 +11,7 @@
 
 #include "algorithms/core/error.h"
 #include "algorithms/geometry/rotation.h"
+#include "algorithms/geometry/terrain_filter.h"
 #include "algorithms/geometry/view.h"
 #include "io/core/dtm_grid.h"
 #include "io/core/image_io.h"
@@ -156,6 +157,9 @@ void ValidateManifest(const BlockManifest& m, bool check_images) {
       }
     }
   }
+  if (!m.dtm.empty() && !m.dsm.empty()) Fail(m, "/ground/dsm", "and /ground/dtm: give one of them");
+  if (!(m.terrain_window_m > 0) || !std::isfinite(m.terrain_window_m))
+    Fail(m, "/ground/terrain_window_m", "must be a positive number of metres");
   if (m.ground_height && !std::isfinite(*m.ground_height)) {
     Fail(m, "/ground/height", "is not a finite number");
   }
@@ -168,6 +172,12 @@ void ValidateManifest(const BlockManifest& m, bool check_images) {
       Fail(m, "/aoi", "must be finite [min x, min y, max x, max y] with min < max");
     }
   }
+}
+
+// The raster the ground comes from: the DTM, or the surface model it is
+// derived from.
+static const std::string& GroundRaster(const BlockManifest& m) {
+  return m.dtm.empty() ? m.dsm : m.dtm;
 }
 
 // Origin of the local frame: under the middle of the block, on the ground
@@ -186,8 +196,8 @@ static Eigen::Vector3d FrameOrigin(const BlockManifest& m, DtmRaster* dtm) {
 
 LocalFrame ManifestLocalFrame(const BlockManifest& m) {
   std::unique_ptr<DtmRaster> dtm;
-  if (!m.dtm.empty() && !m.ground_height)
-    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(m.dtm, m.base_dir), m.crs);
+  if (!GroundRaster(m).empty() && !m.ground_height)
+    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(GroundRaster(m), m.base_dir), m.crs);
   const double undulation = m.height_type == "orthometric" ? m.geoid_undulation : 0.0;
   return LocalFrame(m.crs, FrameOrigin(m, dtm.get()), undulation);
 }
@@ -197,8 +207,8 @@ Block ManifestToBlock(const BlockManifest& m) {
   const double undulation = m.height_type == "orthometric" ? m.geoid_undulation : 0.0;
 
   std::unique_ptr<DtmRaster> dtm;
-  if (!m.dtm.empty())
-    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(m.dtm, m.base_dir), m.crs);
+  if (!GroundRaster(m).empty())
+    dtm = std::make_unique<DtmRaster>(manifest_paths::Resolve(GroundRaster(m), m.base_dir), m.crs);
 
   const Eigen::Vector3d origin = FrameOrigin(m, dtm.get());
   LocalFrame frame = [&] {
@@ -232,6 +242,9 @@ Block ManifestToBlock(const BlockManifest& m) {
   if (dtm) {
     const double low = frame.ToLocal({origin.x(), origin.y(), dtm->min_height()}).z();
     Eigen::Vector4d box = FootprintBox(block, low);
+    // The opening is exact only half a window inside the grid: read the
+    // surface model a window beyond the footprints where it reaches.
+    if (!m.dsm.empty()) box += Eigen::Vector4d(-1, -1, 1, 1) * m.terrain_window_m;
     // Only where the DTM has data.
     Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
     for (const Eigen::Vector2d& p : dtm->OutlineCrs()) {
@@ -243,8 +256,10 @@ Block ManifestToBlock(const BlockManifest& m) {
                           std::min(box[2], hi.x()), std::min(box[3], hi.y()));
     try {
       block.ground.grid = ResampleDtm(*dtm, frame, box);
+      if (!m.dsm.empty())
+        block.ground.grid = TerrainFromSurfaceModel(*block.ground.grid, m.terrain_window_m);
     } catch (const Error& e) {
-      throw Error(Where(m) + ": /ground/dtm: " + e.what());
+      throw Error(Where(m) + (m.dsm.empty() ? ": /ground/dtm: " : ": /ground/dsm: ") + e.what());
     }
   }
 

@@ -35,6 +35,10 @@ struct BlockManifest {
   std::vector<ManifestImage> images;
   std::optional<double> ground_height;  // CRS height units
   std::string dtm;                      // raster path, optional
+  // A surface model (roofs, trees) instead of a DTM: the ground is derived
+  // from it by TerrainFromSurfaceModel over terrain_window_m.
+  std::string dsm;
+  double terrain_window_m = 30.0;
   double max_building_height = 60.0;
   std::string footprints;  // OGR dataset, optional
   std::string footprints_layer;

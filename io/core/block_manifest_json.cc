@@ -169,6 +169,8 @@ BlockManifest ManifestFromJson(const json& doc) {
     const json& g = doc.at("ground");
     if (g.contains("height")) m.ground_height = g.at("height").get<double>();
     if (g.contains("dtm")) m.dtm = g.at("dtm").get<std::string>();
+    if (g.contains("dsm")) m.dsm = g.at("dsm").get<std::string>();
+    m.terrain_window_m = g.value("terrain_window_m", 30.0);
   }
   m.max_building_height = doc.value("max_building_height", 60.0);
   if (doc.contains("footprints")) {
@@ -235,10 +237,14 @@ ordered_json ManifestToOrderedJson(const BlockManifest& m, const fs::path& manif
     images.push_back(j);
   }
   doc["images"] = images;
-  if (m.ground_height || !m.dtm.empty()) {
+  if (m.ground_height || !m.dtm.empty() || !m.dsm.empty()) {
     ordered_json g;
     if (m.ground_height) g["height"] = *m.ground_height;
     if (!m.dtm.empty()) g["dtm"] = manifest_paths::ForManifest(m.dtm, m.base_dir, manifest_dir);
+    if (!m.dsm.empty()) {
+      g["dsm"] = manifest_paths::ForManifest(m.dsm, m.base_dir, manifest_dir);
+      g["terrain_window_m"] = m.terrain_window_m;
+    }
     doc["ground"] = g;
   }
   doc["max_building_height"] = m.max_building_height;

@@ -432,6 +432,39 @@ TEST(BlockManifest, DtmInAnotherCrsIsResampledIntoTheLocalFrame) {
   EXPECT_NEAR(block.ground.HeightAt(0, 0), 0.0, 0.01);
 }
 
+TEST(BlockManifest, ASurfaceModelGivesTheTerrainUnderIt) {
+  const std::string dir = testing::TempDir();
+  BlockManifest m = SyntheticBlock(dir);
+  m.ground_height.reset();
+  const GeographicLib::TransverseMercator tm(kGrs80A, kGrs80F, GeographicLib::Constants::UTM_k0());
+  double lat0, lon0, g, k;
+  tm.Reverse(15.0, 400600.0 - 500000.0, 5800350.0, lat0, lon0, g, k);
+  double slope_lon, slope_lat;
+  const std::string raster =
+      WriteLinearDtm(dir + "/surface.tif", lon0, lat0, &slope_lon, &slope_lat);
+  BlockManifest as_dtm = m, as_dsm = m;
+  as_dtm.dtm = raster;
+  as_dsm.dsm = raster;
+  as_dsm.terrain_window_m = 100;  // 3 cells of the raster's 35 m
+  const Block a = ManifestToBlock(as_dtm), b = ManifestToBlock(as_dsm);
+  ASSERT_TRUE(b.ground.grid.has_value());
+  // A planar slope comes through the opening unchanged.
+  EXPECT_NEAR(b.ground.HeightAt(0, 0), a.ground.HeightAt(0, 0), 1e-3);
+  EXPECT_NEAR(b.ground.HeightAt(30, -20), a.ground.HeightAt(30, -20), 1e-3);
+  // Written and read back with its window.
+  WriteManifest(as_dsm, dir + "/dsm_block.json", true);
+  const BlockManifest back = ReadManifest(dir + "/dsm_block.json");
+  EXPECT_EQ(std::filesystem::path(back.dsm).filename(), "surface.tif");
+  EXPECT_TRUE(back.dtm.empty());
+  EXPECT_DOUBLE_EQ(back.terrain_window_m, 100);
+  BlockManifest both = as_dsm;
+  both.dtm = raster;
+  EXPECT_THROW(ValidateManifest(both, false), Error);
+  both.dtm.clear();
+  both.terrain_window_m = 0;
+  EXPECT_THROW(ValidateManifest(both, false), Error);
+}
+
 TEST(BlockManifest, RealAerialBlockWithDem) {
   ROOFSWEEP_SHARED_PATH_OR_SKIP(data, "data/multiview/orthority-ngi-aerial");
   std::ifstream prj(data + "/ngi_xyz_opk.prj");

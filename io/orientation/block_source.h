@@ -13,8 +13,10 @@ struct ImportOptions {
   std::string crs;          // -a_srs: CRS of the positions, when the format has none
   std::string camera_file;  // interior orientation for OPK files (Pix4D .cam, YAML, ...)
   std::string image_dir;    // where the images are, when not beside the orientation
-  std::optional<double> ground_height;  // -ground
-  std::string dtm;                      // -dtm
+  std::optional<double> ground_height;     // -ground
+  std::string dtm;                         // -dtm
+  std::string dsm;                         // -dsm
+  std::optional<double> terrain_window_m;  // -terrain_window
   bool check_images = true;
 };
 

@@ -184,6 +184,8 @@ void ApplyCommonOptions(const ImportOptions& options, const std::string& source,
   manifest->base_dir = FolderOf(source);
   if (options.ground_height) manifest->ground_height = options.ground_height;
   if (!options.dtm.empty()) manifest->dtm = options.dtm;
+  if (!options.dsm.empty()) manifest->dsm = options.dsm;
+  if (options.terrain_window_m) manifest->terrain_window_m = *options.terrain_window_m;
 }
 
 }  // namespace roofsweep::orientation

@@ -13,6 +13,7 @@ namespace {
 int Import(const std::vector<std::string>& args, Context& ctx) {
   ImportRequest r;
   double ground = std::nan("");
+  double terrain_window = std::nan("");
   bool no_check = false;
   std::string formats;
   for (const auto& f : ImportFormats()) formats += (formats.empty() ? "" : ", ") + f;
@@ -28,6 +29,11 @@ int Import(const std::vector<std::string>& args, Context& ctx) {
       .Option("-images", &r.options.image_dir, "DIR", "folder holding the images")
       .Option("-ground", &ground, "HEIGHT", "ground height (ellipsoidal, CRS units)")
       .Option("-dtm", &r.options.dtm, "RASTER", "ground model raster (GDAL)")
+      .Option("-dsm", &r.options.dsm, "RASTER",
+              "surface model raster (GDAL), for blocks without a bare-earth DTM: the ground is "
+              "derived from it by a morphological opening")
+      .Option("-terrain_window", &terrain_window, "M",
+              "window of that opening, wider than the widest building (30)")
       .Flag("-no_image_check", &no_check,
             "do not open the images (annotation-only sets); other commands will need them")
       .Flag("-overwrite", &r.overwrite, "replace an existing output")
@@ -45,6 +51,15 @@ int Import(const std::vector<std::string>& args, Context& ctx) {
                      p.Synopsis()};
   RequireNewOutput(p, r.output, r.overwrite);
   if (!std::isnan(ground)) r.options.ground_height = ground;
+  if (!r.options.dtm.empty() && !r.options.dsm.empty())
+    throw UsageError{"Options -dtm and -dsm exclude each other", p.Synopsis()};
+  if (!std::isnan(terrain_window)) {
+    if (!(terrain_window > 0))
+      throw UsageError{"Option -terrain_window expects a positive width in metres", p.Synopsis()};
+    if (r.options.dsm.empty())
+      throw UsageError{"Option -terrain_window goes with -dsm", p.Synopsis()};
+    r.options.terrain_window_m = terrain_window;
+  }
   r.options.check_images = !no_check;
   const ImportSummary s = RunImport(r, *ctx.progress);
   if (!ctx.quiet) {

@@ -50,6 +50,9 @@ std::string FormatInfoText(const BlockInfo& info) {
     s << "height " << *m.ground_height << "\n";
   else if (!m.dtm.empty())
     s << "DTM " << m.dtm << "\n";
+  else if (!m.dsm.empty())
+    s << "terrain from the surface model " << m.dsm << " (opening over " << m.terrain_window_m
+      << " m)\n";
   else
     s << "unknown (footprints on the scene plane through the optical axes)\n";
   s << "Cameras: " << m.cameras.size() << "\n";
@@ -98,6 +101,7 @@ nlohmann::json InfoToJson(const BlockInfo& info) {
                        {"h", info.block.frame.origin_h}};
   j["ground_height"] = m.ground_height ? json(*m.ground_height) : json(nullptr);
   j["dtm"] = m.dtm.empty() ? json(nullptr) : json(m.dtm);
+  j["dsm"] = m.dsm.empty() ? json(nullptr) : json(m.dsm);
   j["cameras"] = json::array();
   for (const Camera& c : m.cameras) {
     j["cameras"].push_back({{"id", c.id},

@@ -123,6 +123,17 @@ assert all(0.01 < i['gsd_m'] < 0.5 for i in im), [i['gsd_m'] for i in im]
 # The set's only elevation model is a DSM: info says so.
 assert any('surface model' in w for w in j['warnings']), j['warnings']" "$WORK/stdout.txt" \
       && pass odm_gsd_plausible || fail odm_gsd_plausible "$(head -c 600 "$WORK/stdout.txt")"
+    # Given as what it is, the DSM yields a terrain (no surface-model
+    # warning), and the manifest keeps the window.
+    expect_ok import_odm_dsm import opensfm "$s/opensfm/reconstruction.json" -images "$s/images" -dsm "$s/odm_dem/dsm.tif" -terrain_window 40 -o "$WORK/odm_dsm.json" &&
+      expect_ok info_odm_dsm info "$WORK/odm_dsm.json" --json &&
+      python3 -c "
+import json,sys; j=json.load(open(sys.argv[1]))
+assert j['dsm'] and not j['dtm'], (j['dsm'], j['dtm'])
+assert not any('surface model' in w for w in j['warnings']), j['warnings']
+m=json.load(open(sys.argv[2])); assert m['ground']['terrain_window_m'] == 40, m['ground']" "$WORK/stdout.txt" "$WORK/odm_dsm.json" \
+      && pass odm_terrain_from_dsm || fail odm_terrain_from_dsm "$(head -c 600 "$WORK/stdout.txt")"
+    expect_fail import_dtm_and_dsm "$WORK/both.json" "exclude each other" -- import opensfm "$s/opensfm/reconstruction.json" -images "$s/images" -dtm "$s/odm_dem/dsm.tif" -dsm "$s/odm_dem/dsm.tif" -o "$WORK/both.json"
   fi
 }
 
