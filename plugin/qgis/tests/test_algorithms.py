@@ -258,6 +258,19 @@ def test_eval_groundtruth_against_itself(tiny_block, tmp_path, roofsweep_exe):
     assert out["RMSZ_M"] == pytest.approx(0.0, abs=1e-6)
 
 
+def test_overlay_of_the_true_model_lies_on_the_image_edges(tiny_block, tmp_path, roofsweep_exe):
+    if not has_command(roofsweep_exe, "overlay"):
+        pytest.skip("roofsweep overlay is not available in this build ({})".format(roofsweep_exe))
+    res, _ = tiny_block
+    out = processing.run("roofsweep:overlay", {"BLOCK": res["BLOCK"], "MODEL": res["GROUNDTRUTH"],
+                                               "OUTPUT": str(tmp_path / "ov"), "REPORT": str(tmp_path / "ov.json")},
+                         feedback=RecordingFeedback())
+    assert sorted(os.listdir(out["OUTPUT"])) == ["s01_i001.png", "s01_i002.png"]
+    assert out["ROOF_EDGES_ON_IMAGE_EDGES"] >= 0.9
+    with open(out["REPORT"]) as f:
+        assert len(json.load(f)["buildings"]) == res["BUILDING_COUNT"]
+
+
 def test_lines_and_match_on_tiny_block(tiny_block, tmp_path, roofsweep_exe):
     for command in ("lines", "match"):
         if not has_command(roofsweep_exe, command):

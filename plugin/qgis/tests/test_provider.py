@@ -14,6 +14,7 @@ EXPECTED = {
     "roofsweep:match": "Reconstruct 3D lines",
     "roofsweep:run": "Reconstruct LoD2 buildings",
     "roofsweep:eval": "Evaluate against ground truth",
+    "roofsweep:overlay": "Check a model against the images",
     "roofsweep:simulate": "Simulate aerial block",
     "roofsweep:convert": "Convert LoD2 model",
 }

@@ -6,8 +6,9 @@ from .import_block import ImportAlgorithm
 from .info import InfoAlgorithm
 from .lines import LinesAlgorithm
 from .match import MatchAlgorithm
+from .overlay import OverlayAlgorithm
 from .reconstruct import ReconstructAlgorithm
 from .simulate import SimulateAlgorithm
 
 ALGORITHMS = (ImportAlgorithm, InfoAlgorithm, LinesAlgorithm, MatchAlgorithm, ReconstructAlgorithm,
-              EvaluateAlgorithm, SimulateAlgorithm, ConvertAlgorithm)
+              EvaluateAlgorithm, OverlayAlgorithm, SimulateAlgorithm, ConvertAlgorithm)

@@ -18,7 +18,7 @@ class ImportAlgorithm(RoofsweepAlgorithm):
     HELP = ("Reads an oriented image block (exterior and interior orientation from COLMAP, Pix4D, Metashape, "
             "OPK text, OpenSfM or Oxford VGG) into a roofsweep block manifest (block.json). Give the source "
             "as a file or, for folder-based formats (COLMAP sparse model, VGG sequence), as a folder.")
-    USES_OPTIONS = ("-o", "-a_srs", "-camera", "-images", "-ground", "-dtm", "-overwrite")
+    USES_OPTIONS = ("-o", "-a_srs", "-camera", "-images", "-ground", "-dtm", "-dsm", "-overwrite")
 
     FORMAT = "FORMAT"
     SOURCE = "SOURCE"
@@ -28,6 +28,7 @@ class ImportAlgorithm(RoofsweepAlgorithm):
     CRS = "CRS"
     GROUND = "GROUND"
     DTM = "DTM"
+    DSM = "DSM"
     OUTPUT = "OUTPUT"
 
     def initAlgorithm(self, config=None):
@@ -46,6 +47,9 @@ class ImportAlgorithm(RoofsweepAlgorithm):
                                                        QgsProcessingParameterNumber.Double, None, True))
         self.addParameter(QgsProcessingParameterRasterLayer(self.DTM, self.tr("Ground model (DTM)"),
                                                             optional=True))
+        self.addParameter(QgsProcessingParameterRasterLayer(
+            self.DSM, self.tr("Surface model (DSM; the ground is derived from it), instead of a DTM"),
+            optional=True))
         self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Block manifest"),
                                                                 fileFilter="Block manifest (*.json)"))
 
@@ -73,6 +77,11 @@ class ImportAlgorithm(RoofsweepAlgorithm):
             if dtm is None:
                 raise QgsProcessingException("Cannot open the ground model '{}'".format(parameters[self.DTM]))
             args += ["-dtm", dtm.source()]
+        if self.given(parameters, self.DSM):
+            dsm = self.parameterAsRasterLayer(parameters, self.DSM, context)
+            if dsm is None:
+                raise QgsProcessingException("Cannot open the surface model '{}'".format(parameters[self.DSM]))
+            args += ["-dsm", dsm.source()]
         args += ["-overwrite", "-o", out]
         self.run_program(args, feedback)
         return {self.OUTPUT: out}
