@@ -1,5 +1,7 @@
 #include "algorithms/eval/image_overlay.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -218,6 +220,27 @@ ImageOverlay OverlayModel(const cv::Mat& image, const Camera& camera, const Pose
     }
   }
   return out;
+}
+
+std::vector<EdgeSupport> BuildingEdgeSupport(const CityModel& model, const Block& block,
+                                             const std::vector<cv::Mat>& images,
+                                             const ImageEdgeOptions& options) {
+  const int nb = static_cast<int>(model.buildings.size());
+  std::vector<EdgeSupport> total(static_cast<size_t>(nb));
+  if (nb == 0) return total;
+  const std::vector<ModelEdge> edges = ModelEdges(model);
+  const ModelOccluder occluder(model);
+  const size_t n = std::min(images.size(), block.views.size());
+  std::vector<std::vector<EdgeSupport>> per_view(n);
+  tbb::parallel_for(size_t{0}, n, [&](size_t v) {
+    const View& view = block.views[v];
+    per_view[v] = OverlayModel(images[v], block.CameraOf(view), view.pose, edges, nb, occluder,
+                               options, /*draw=*/false)
+                      .per_building;
+  });
+  for (const auto& pv : per_view)
+    for (int b = 0; b < nb; ++b) total[b] += pv[b];
+  return total;
 }
 
 }  // namespace roofsweep

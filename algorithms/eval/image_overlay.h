@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
+#include "algorithms/geometry/block.h"
 #include "algorithms/geometry/camera.h"
 #include "algorithms/geometry/segment3.h"
 #include "algorithms/geometry/view.h"
@@ -91,5 +92,13 @@ ImageOverlay OverlayModel(const cv::Mat& image, const Camera& camera, const Pose
                           const std::vector<ModelEdge>& edges, int buildings,
                           const ModelOccluder& occluder, const ImageEdgeOptions& options = {},
                           bool draw = true);
+
+// The image support of each building's roof edges summed over every view
+// of the block (`images` in block order, as ReadImage returns them),
+// indexed like model.buildings; the model in the block's local frame.
+// Views are processed in parallel and summed in block order.
+std::vector<EdgeSupport> BuildingEdgeSupport(const CityModel& model, const Block& block,
+                                             const std::vector<cv::Mat>& images,
+                                             const ImageEdgeOptions& options = {});
 
 }  // namespace roofsweep

@@ -82,6 +82,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-no_footprint_growth", &no_growth,
             "with footprints, do not grow a sloped face seen over part of its footprint along "
             "its contour lines by the strips of the footprint the images confirm")
+      .Option("-min_edge_support", &r.min_edge_support, "F",
+              "drop buildings with less than this share of their visible roof-edge length on an "
+              "image edge (attribute edge_support; default 0: keep all)")
       .Flag("-no_coplanar_merge", &no_merge,
             "do not merge two roof planes a few degrees apart that meet without a step (one "
             "face fitted twice), even where the images confirm the merged plane");
@@ -91,6 +94,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite")
       .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg");
   if (!p.Parse(args)) return 0;
+  if (!(r.min_edge_support >= 0 && r.min_edge_support <= 1))
+    throw UsageError("Option -min_edge_support expects a share from 0 to 1", p.Synopsis());
   r.line_planes = !sweep_only;
   r.mirror_faces = !no_mirror;
   r.footprint_growth = !no_growth;

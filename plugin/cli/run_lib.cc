@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -189,6 +190,49 @@ void WriteReport(const std::string& path, const RunSummary& s) {
     if (!f) throw Error(path + ": cannot write the report");
   }
   file.Commit();
+}
+
+// Sets each building's edge_support (BuildingEdgeSupport) and drops those
+// below r.min_edge_support, with the reason, also for their planes in
+// `assembled` (the -planes layer tells them as not built). Returns the
+// stage's result line.
+std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& images,
+                             const RunRequest& r, AssemblyResult* assembled,
+                             std::vector<std::string>* rejected) {
+  CityModel& model = assembled->model;
+  const std::vector<EdgeSupport> support = BuildingEdgeSupport(model, block, images, r.image_edges);
+  std::vector<Building> kept;
+  std::vector<double> fractions;
+  std::map<std::string, std::string> dropped;  // building or part id -> reason
+  for (size_t i = 0; i < model.buildings.size(); ++i) {
+    Building& b = model.buildings[i];
+    const double f = support[i].Fraction();
+    if (std::isfinite(f)) {
+      b.double_attributes["edge_support"] = f;
+      if (f < r.min_edge_support) {
+        const std::string why =
+            "building " + b.id + ": " +
+            StrFormat("roof edges on image edges %.2f < %.2f", f, r.min_edge_support);
+        rejected->push_back(why);
+        dropped[b.id] = why;
+        for (const Building* s : b.Solids()) dropped[s->id] = why;
+        continue;
+      }
+      fractions.push_back(f);
+    }
+    kept.push_back(std::move(b));
+  }
+  model.buildings = std::move(kept);
+  for (size_t i = 0; i < assembled->plane_building.size(); ++i) {
+    const auto d = dropped.find(assembled->plane_building[i]);
+    if (d == dropped.end()) continue;
+    assembled->plane_building[i].clear();
+    if (i < assembled->plane_reason.size()) assembled->plane_reason[i] = d->second;
+  }
+  if (fractions.empty()) return "no roof edge seen";
+  std::sort(fractions.begin(), fractions.end());
+  return StrFormat("median %.0f %% of roof edges on image edges, lowest %.0f %%",
+                   100 * fractions[fractions.size() / 2], 100 * fractions.front());
 }
 
 }  // namespace
@@ -607,6 +651,10 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   t0 = Clock::now();
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
+  const RunStage assembly_stage{"", "", Since(t0)};
+  t0 = Clock::now();
+  const std::string support_result = ApplyEdgeSupport(block, images, r, &assembled, &out.rejected);
+  const RunStage support_stage{"edge support", support_result, Since(t0)};
   out.buildings = static_cast<int>(assembled.model.buildings.size());
   for (const Building& b : assembled.model.buildings)
     out.solids += static_cast<int>(b.Solids().size());
@@ -625,7 +673,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                 : std::string()) +
            (assembled.party_cuts > 0 ? StrFormat(", %d cut at party walls", assembled.party_cuts)
                                      : std::string()),
-       Since(t0)});
+       assembly_stage.seconds});
+  out.stages.push_back(support_stage);
 
   t0 = Clock::now();
   CityModel model = std::move(assembled.model);

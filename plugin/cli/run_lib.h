@@ -8,6 +8,7 @@
 #include "algorithms/buildings/mirror_completion.h"
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
+#include "algorithms/eval/image_overlay.h"
 #include "algorithms/matching/match_options.h"
 #include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
@@ -74,6 +75,12 @@ struct RunRequest {
   // split_at_party_lines, which must be on too).
   bool colour_breaks = true;
   ColourBreakOptions colour_break;
+  // Every building gets edge_support: the share of its visible roof-edge
+  // length over all views that lies on an image edge (BuildingEdgeSupport,
+  // as `overlay` measures it). Buildings below min_edge_support are dropped
+  // with a reason; 0 drops none.
+  ImageEdgeOptions image_edges;
+  double min_edge_support = 0;
 };
 
 struct RunStage {

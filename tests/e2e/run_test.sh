@@ -42,6 +42,20 @@ assert names[:3] == ["read", "segments + 3D lines", "half-plane sweep"], names
 assert all(isinstance(x, str) and ": " in x for x in r["rejected"])
 PY
   [[ -s "$WORK/l.gpkg" && -s "$WORK/hp.gpkg" ]] && pass run_side_layers || fail run_side_layers "missing"
+  # Every building carries the image support of its roof edges (a share),
+  # and the stage table says how it came out.
+  python3 - "$WORK/b.gml" <<'PY' && pass run_edge_support || fail run_edge_support "edge_support missing or out of range"
+import re, sys
+text = open(sys.argv[1]).read()
+n = len(re.findall(r"<bldg:Building ", text))
+v = [float(x) for x in re.findall(r'<gen:doubleAttribute name="edge_support">\s*<gen:value>([^<]+)<', text)]
+assert n and len(v) == n and all(0 <= x <= 1 for x in v), (n, v)
+PY
+  python3 -c '
+import json, re, sys
+st = {s["stage"]: s["result"] for s in json.load(open(sys.argv[1]))["stages"]}
+assert re.match(r"median \d+ % of roof edges on image edges, lowest \d+ %", st["edge support"]), st
+' "$WORK/report.json" && pass run_edge_support_stage || fail run_edge_support_stage "not in the report"
   # Every verified plane hypothesis is built into a building of the output
   # or carries a reason; the built ones are the planes the run used.
   python3 - "$WORK/planes.gpkg" "$WORK/report.json" "$WORK/b.gml" <<'PY' && pass run_planes_layer \
@@ -195,10 +209,30 @@ PY
     -o "$WORK/y.gml" -footprints "$WORK/deg.gpkg"
 }
 
+test_run_drops_buildings_the_images_do_not_support() {
+  small_block || return
+  # No roof outline lies wholly on image edges: every building goes, each
+  # with its reason.
+  expect_ok run_min_edge_support run "$SIM" -o "$WORK/none.gml" -min_edge_support 1 \
+    -report "$WORK/none.json" -planes "$WORK/none_planes.gpkg" || return
+  python3 -c '
+import json, sqlite3, sys
+r = json.load(open(sys.argv[1]))["rejected"]
+dropped = [x for x in r if "roof edges on image edges" in x]
+assert dropped, r
+rows = sqlite3.connect(sys.argv[2]).execute("select status, reason from roof_planes").fetchall()
+assert not [x for x in rows if x[0] == "built"], rows
+assert [x for x in rows if x[1] and "roof edges on image edges" in x[1]], rows
+' "$WORK/none.json" "$WORK/none_planes.gpkg" && ! grep -q "<bldg:Building " "$WORK/none.gml" && pass run_min_edge_support_drops \
+    || fail run_min_edge_support_drops "buildings kept or no reason"
+}
+
 test_run_refuses_bad_input() {
   small_block || return
   touch "$WORK/exists.gml"
   expect_fail run_exists "" "exists.*-overwrite" -- run "$SIM" -o "$WORK/exists.gml"
+  expect_fail run_bad_min_edge_support "$WORK/z.gml" "min_edge_support" -- run "$SIM" -o "$WORK/z.gml" \
+    -min_edge_support 1.5
   expect_fail run_no_block "$WORK/x.gml" "nope" -- run "$WORK/nope" -o "$WORK/x.gml"
   expect_fail run_bad_format "$WORK/x.abc" "format|extension" -- run "$SIM" -o "$WORK/x.abc"
 }
