@@ -43,8 +43,11 @@ void WriteReport(const std::string& path, const OverlaySummary& s) {
     j["views"].push_back({{"view", v.view}, {"file", v.file}, {"roof_edges", SupportJson(v.roof)}});
   j["buildings"] = nlohmann::json::array();
   for (const auto& b : s.buildings)
-    j["buildings"].push_back(
-        {{"id", b.id}, {"views", b.views}, {"roof_edges", SupportJson(b.roof)}});
+    j["buildings"].push_back({{"id", b.id},
+                              {"x", std::isfinite(b.x) ? nlohmann::json(b.x) : nlohmann::json()},
+                              {"y", std::isfinite(b.y) ? nlohmann::json(b.y) : nlohmann::json()},
+                              {"views", b.views},
+                              {"roof_edges", SupportJson(b.roof)}});
   j["messages"] = s.messages;
   OutputFile file(path, /*overwrite=*/true);  // refused before the work if it existed
   {
@@ -119,6 +122,20 @@ OverlaySummary RunOverlay(const OverlayRequest& r, Progress& progress) {
                              manifest.crs);
     }
   }
+  std::vector<Eigen::Vector2d> centres;
+  for (const Building& b : model.buildings) {
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    int n = 0;
+    for (const Building* s : b.Solids())
+      for (const Surface& surface : s->surfaces)
+        if (surface.type == SurfaceType::kRoof)
+          for (const Polygon3& p : surface.polygons)
+            for (const Eigen::Vector3d& v : p.exterior) {
+              sum += v.head<2>();
+              ++n;
+            }
+    centres.push_back(n > 0 ? Eigen::Vector2d(sum / n) : Eigen::Vector2d(NAN, NAN));
+  }
   model.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToLocal(v); });
   for (const Building& b : model.buildings)
     for (const Building* s : b.Solids())
@@ -181,7 +198,11 @@ OverlaySummary RunOverlay(const OverlayRequest& r, Progress& progress) {
 
   // Sums in block order, so that the figures do not depend on the schedule.
   out.buildings.resize(model.buildings.size());
-  for (int b = 0; b < nb; ++b) out.buildings[b].id = model.buildings[b].id;
+  for (int b = 0; b < nb; ++b) {
+    out.buildings[b].id = model.buildings[b].id;
+    out.buildings[b].x = centres[b].x();
+    out.buildings[b].y = centres[b].y();
+  }
   for (size_t i = 0; i < views.size(); ++i) {
     out.total += out.views[i].roof;
     for (int b = 0; b < nb; ++b) {
@@ -223,8 +244,9 @@ std::string FormatOverlaySummary(const OverlaySummary& s) {
   if (n > 0) {
     o << "Least supported buildings (" << seen.size() << " seen over 100 px or more):\n";
     for (size_t i = 0; i < n; ++i)
-      o << StrFormat("  %-32s %s on edge over %.0f px in %d views\n", seen[i]->id.c_str(),
-                     pct(seen[i]->roof).c_str(), seen[i]->roof.visible_px, seen[i]->views);
+      o << StrFormat("  %-20s %s on edge over %6.0f px in %2d views, at %.2f %.2f\n",
+                     seen[i]->id.c_str(), pct(seen[i]->roof).c_str(), seen[i]->roof.visible_px,
+                     seen[i]->views, seen[i]->x, seen[i]->y);
   }
   o << StrFormat("Time: %.1f s\n", s.seconds);
   return o.str();

@@ -28,6 +28,9 @@ struct OverlayBuildingSummary {
   std::string id;
   EdgeSupport roof;  // over all views
   int views = 0;     // views in which some of its roof outline is visible
+  // Mean of its roof vertices in the block's CRS (the model's coordinates
+  // when the block has none), to find it in a GIS.
+  double x = 0, y = 0;
 };
 
 struct OverlaySummary {

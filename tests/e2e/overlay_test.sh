@@ -57,6 +57,12 @@ test_overlay_of_the_true_model() {
   fi
   # The true roof outline lies on the rendered image edges.
   expect_fraction overlay_truth_supported "$WORK/ov.json" ">=" 0.9
+  # Each building with where it stands (the block's CRS, UTM metres here).
+  python3 -c '
+import json, sys
+b = json.load(open(sys.argv[1]))["buildings"]
+assert b and all(isinstance(x["x"], float) and x["x"] > 1e5 and x["y"] > 1e6 for x in b), b
+' "$WORK/ov.json" && pass overlay_building_places || fail overlay_building_places "x/y missing"
   # The same model 1 m (20 GSD) off is not.
   shifted_truth "$WORK/shifted.city.json" 1 1 || { fail shift "could not write the model"; return; }
   expect_ok overlay_shifted overlay "$SIM" "$WORK/shifted.city.json" -o "$WORK/ov_shifted" \
