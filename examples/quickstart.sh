@@ -37,3 +37,8 @@ mkdir -p "$W"
 # 6. Score the buildings and the 3D lines against the ground truth, with a
 #    plan-view overlay to look at.
 "$RS" eval "$W/buildings.gml" "$W/sim" -lines "$W/lines3d.gpkg" -png "$W/overlay.png" -overwrite
+
+# 7. On a real block there is no ground truth: draw the buildings over the
+#    images and see how much of their roof outline lies on image edges
+#    (green where it does, red where it does not; -report lists each building).
+"$RS" overlay "$W/block.json" "$W/buildings.gpkg" -o "$W/check" -report "$W/check.json" -overwrite -q

@@ -32,3 +32,7 @@ echo "   -> $OUT/buildings_footprints.gpkg: walls on the footprints, buildings l
 "$RS" run "$OUT/block" -lines "$OUT/lines3d.gpkg" -footprints "$OUT/block/footprints.gpkg" \
   -o "$OUT/buildings_footprints.gpkg" -report "$OUT/run_report_footprints.json" -overwrite
 "$RS" eval "$OUT/buildings_footprints.gpkg" "$OUT/block" -png "$OUT/eval_footprints.png" -overwrite
+
+echo "== 7. the buildings drawn over every image, as on a real block without ground truth -> $OUT/overlay/"
+echo "   (roof edges green on an image edge, red off it; the share per view and the least supported buildings)"
+"$RS" overlay "$OUT/block" "$OUT/buildings.gpkg" -o "$OUT/overlay" -report "$OUT/overlay.json" -overwrite

@@ -11,7 +11,7 @@ test_quickstart_runs() {
     return
   fi
   for f in block.json lines.gpkg lines3d.gpkg buildings.gpkg run.json buildings.gml buildings.city.json \
-    truth.fgb overlay.png; do
+    truth.fgb overlay.png check.json; do
     [[ -s "$WORK/q/$f" ]] && pass "quickstart_wrote_$f" || fail "quickstart_wrote_$f" "missing"
   done
   grep -q "completeness" "$WORK/out.txt" && pass quickstart_prints_scores || fail quickstart_prints_scores "no table"
