@@ -32,6 +32,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false;
+  bool keep_eave_planes = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -85,6 +86,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-min_edge_support", &r.min_edge_support, "F",
               "drop buildings with less than this share of their visible roof-edge length on an "
               "image edge (attribute edge_support; default 0: keep all)")
+      .Flag("-no_eave_filter", &keep_eave_planes,
+            "keep flat planes that only continue the eaves of sloped faces outwards (the yard "
+            "in the inner corner of an L-shaped house, joined from its two eaves)")
       .Flag("-no_coplanar_merge", &no_merge,
             "do not merge two roof planes a few degrees apart that meet without a step (one "
             "face fitted twice), even where the images confirm the merged plane");
@@ -97,6 +101,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   if (!(r.min_edge_support >= 0 && r.min_edge_support <= 1))
     throw UsageError("Option -min_edge_support expects a share from 0 to 1", p.Synopsis());
   r.line_planes = !sweep_only;
+  r.drop_eave_planes = !keep_eave_planes;
   r.mirror_faces = !no_mirror;
   r.footprint_growth = !no_growth;
   r.merge_coplanar = !no_merge;

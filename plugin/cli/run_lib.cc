@@ -633,6 +633,24 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
          Since(t0)});
   }
 
+  if (r.drop_eave_planes) {
+    t0 = Clock::now();
+    const std::vector<std::string> why = FlatPlanesBeyondEaves(roof_planes, r.eave_planes);
+    std::vector<RoofPlaneHypothesis> kept;
+    size_t dropped = 0;
+    for (size_t i = 0; i < roof_planes.size(); ++i) {
+      if (why[i].empty()) {
+        kept.push_back(std::move(roof_planes[i]));
+      } else {
+        out.rejected.push_back(roof_planes[i].id + ": " + why[i]);
+        ++dropped;
+      }
+    }
+    roof_planes = std::move(kept);
+    out.stages.push_back(
+        {"flat planes beyond eaves", StrFormat("%zu dropped", dropped), Since(t0)});
+  }
+
   if (footprints.empty() && r.colour_breaks && r.assembly.split_at_party_lines) {
     t0 = Clock::now();
     const auto breaks = FindColourBreaks(block, images, roof_planes, r.colour_break);

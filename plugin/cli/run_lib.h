@@ -12,6 +12,7 @@
 #include "algorithms/matching/match_options.h"
 #include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
+#include "algorithms/sweep/eave_planes.h"
 #include "algorithms/sweep/merge_coplanar_neighbours.h"
 #include "algorithms/sweep/plane_grouping.h"
 #include "algorithms/sweep/sweep_options.h"
@@ -81,6 +82,10 @@ struct RunRequest {
   // with a reason; 0 drops none.
   ImageEdgeOptions image_edges;
   double min_edge_support = 0;
+  // Flat planes that only continue sloped faces' eaves outwards are
+  // dropped (FlatPlanesBeyondEaves): the yard in the inner corner of an L.
+  bool drop_eave_planes = true;
+  EavePlaneOptions eave_planes;
 };
 
 struct RunStage {

@@ -18,6 +18,8 @@ test_run_writes_valid_closed_lod2() {
   grep -q "^half-plane sweep" "$WORK/stdout.txt" || fail run_stage_table "no stage table"
   grep -Eq "^near-coplanar planes merged +[0-9]+ pairs proposed, [0-9]+ merged" "$WORK/stdout.txt" \
     && pass run_merge_stage || fail run_merge_stage "$(grep -i coplanar "$WORK/stdout.txt")"
+  grep -Eq "^flat planes beyond eaves +[0-9]+ dropped" "$WORK/stdout.txt" \
+    && pass run_eave_stage || fail run_eave_stage "$(grep -i eaves "$WORK/stdout.txt")"
   local n
   n=$(grep -c "<bldg:Building " "$WORK/b.gml" || true)
   [[ $n -gt 0 ]] && pass run_builds_buildings || fail run_builds_buildings "no building in b.gml"
