@@ -174,8 +174,10 @@ ImageOverlay OverlayModel(const cv::Mat& image, const Camera& camera, const Pose
   };
   const cv::Scalar kGood(0, 200, 0), kBad(255, 0, 0), kWall(0, 255, 255);
 
-  // Walls first, so that the roof outline is drawn over them.
+  // Walls first, so that the roof outline is drawn over them. Walls are
+  // only drawn, never scored: without a drawing they cost nothing.
   for (const ModelEdgeKind pass : {ModelEdgeKind::kWall, ModelEdgeKind::kRoof}) {
+    if (pass == ModelEdgeKind::kWall && !draw) continue;
     for (const ModelEdge& e : edges) {
       if (e.kind != pass) continue;
       const auto pa = Project(camera, pose, e.segment.a), pb = Project(camera, pose, e.segment.b);
@@ -198,7 +200,7 @@ ImageOverlay OverlayModel(const cv::Mat& image, const Camera& camera, const Pose
         if (len <= 0) continue;
         const bool visible = occluder.Visible(pose.C, X);
         if (pass == ModelEdgeKind::kWall) {
-          if (visible && draw)
+          if (visible)
             cv::line(out.drawing, pt(*q[k]), pt(*q[k + 1]), kWall, thickness, cv::LINE_AA, kShift);
           continue;
         }

@@ -3,17 +3,13 @@
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
-#include "algorithms/core/format.h"
+#include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
 namespace {
 
 double SlopeDeg(const Eigen::Vector4d& p) {
   return std::acos(std::min(1.0, std::abs(p[2]) / p.head<3>().norm())) * 180 / M_PI;
-}
-
-double Z(const Eigen::Vector4d& p, const Eigen::Vector2d& xy) {
-  return -(p[0] * xy.x() + p[1] * xy.y() + p[3]) / p[2];
 }
 
 }  // namespace
@@ -38,15 +34,15 @@ std::vector<std::string> FlatPlanesBeyondEaves(const std::vector<RoofPlaneHypoth
       const Eigen::Vector2d m = 0.5 * (l[0] + l[1]);
       Eigen::Vector2d n(-d.y() / len, d.x() / len);
       if ((c - m).dot(n) > 0) n = -n;  // n points away from the flat patch
-      const double zf = Z(F.plane, m);
+      const double zf = PlaneZ(F.plane, m.x(), m.y());
       bool eave = false;
       for (size_t p = 0; p < planes.size() && !eave; ++p) {
         const RoofPlaneHypothesis& P = planes[p];
         if (p == f || P.patch.size() < 3 || SlopeDeg(P.plane) < o.min_face_slope_deg) continue;
         const Eigen::Vector2d beyond = m + o.probe_m * n;
         if (!InsideConvex(P.patch, beyond) || InsideConvex(P.patch, c)) continue;
-        if (std::abs(Z(P.plane, m) - zf) > o.max_height_step_m) continue;
-        if (Z(P.plane, beyond) - zf < o.min_rise_m) continue;
+        if (std::abs(PlaneZ(P.plane, m.x(), m.y()) - zf) > o.max_height_step_m) continue;
+        if (PlaneZ(P.plane, beyond.x(), beyond.y()) - zf < o.min_rise_m) continue;
         eave = true;
         faces += (faces.empty() ? "" : ", ") + P.id;
       }
