@@ -13,21 +13,8 @@ namespace {
 using V = Eigen::Vector3d;
 
 // Nadir camera 100 m above the ground, centred over the gable below.
-Camera TestCamera() {
-  Camera c;
-  c.width = 200;
-  c.height = 200;
-  c.fx = c.fy = 500;
-  c.cx = c.cy = 100;
-  return c;
-}
-
-Pose TestPose() {
-  Pose p;
-  p.R << 1, 0, 0, 0, -1, 0, 0, 0, -1;
-  p.C = V(6, 4, 100);
-  return p;
-}
+Camera TestCamera() { return eval_test::NadirTestCamera(); }
+Pose TestPose() { return eval_test::NadirTestPose(6, 4); }
 
 // Gable 12 x 8 m, eaves 6 m, ridge along x 3 m higher.
 CityModel GableModel() {

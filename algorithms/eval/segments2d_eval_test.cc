@@ -5,27 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "algorithms/eval/test_models.h"
+
 namespace roofsweep {
 namespace eval {
 namespace {
-
-// Nadir camera 100 m above the ground: world (X, Y, 0) images at pixel
-// (100 + 5 X, 100 - 5 Y); depth 100 - Z.
-Camera TestCamera() {
-  Camera c;
-  c.width = 200;
-  c.height = 200;
-  c.fx = c.fy = 500;
-  c.cx = c.cy = 100;
-  return c;
-}
-
-Pose TestPose() {
-  Pose p;
-  p.R << 1, 0, 0, 0, -1, 0, 0, 0, -1;
-  p.C = Eigen::Vector3d(0, 0, 100);
-  return p;
-}
 
 sim::TrueEdge Edge(double x0, double y0, double x1, double y1, sim::EdgeKind kind) {
   sim::TrueEdge e;
@@ -49,7 +33,8 @@ TEST(Segments2DEval, PerfectDetectionScoresOne) {
   // Ridge from pixel (50, 100) to (150, 100), detected exactly (reversed).
   const std::vector<sim::TrueEdge> truth = {Edge(-10, 0, 10, 0, sim::EdgeKind::kRidge)};
   const Segment2DScores s =
-      EvaluateSegments2D(TestCamera(), TestPose(), truth, kAllVisible, {Seg(150, 100, 50, 100)});
+      EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(), truth,
+                         kAllVisible, {Seg(150, 100, 50, 100)});
   EXPECT_NEAR(s.roof.length_px, 100.0, 1.0);
   EXPECT_DOUBLE_EQ(s.Recall(), 1.0);
   EXPECT_DOUBLE_EQ(s.Precision(), 1.0);
@@ -61,7 +46,8 @@ TEST(Segments2DEval, PerfectDetectionScoresOne) {
 TEST(Segments2DEval, ThreePixelShiftScoresZero) {
   const std::vector<sim::TrueEdge> truth = {Edge(-10, 0, 10, 0, sim::EdgeKind::kEave)};
   const Segment2DScores s =
-      EvaluateSegments2D(TestCamera(), TestPose(), truth, kAllVisible, {Seg(50, 103, 150, 103)});
+      EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(), truth,
+                         kAllVisible, {Seg(50, 103, 150, 103)});
   EXPECT_GT(s.roof.length_px, 90.0);
   EXPECT_DOUBLE_EQ(s.Recall(), 0.0);
   EXPECT_DOUBLE_EQ(s.Precision(), 0.0);
@@ -70,13 +56,14 @@ TEST(Segments2DEval, ThreePixelShiftScoresZero) {
 TEST(Segments2DEval, WithinOnePixelAndRotatedTenDegrees) {
   const std::vector<sim::TrueEdge> truth = {Edge(-10, 0, 10, 0, sim::EdgeKind::kRidge)};
   // 1 px off: covered.
-  EXPECT_DOUBLE_EQ(
-      EvaluateSegments2D(TestCamera(), TestPose(), truth, kAllVisible, {Seg(50, 101, 150, 101)})
-          .Recall(),
-      1.0);
+  EXPECT_DOUBLE_EQ(EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(),
+                                      truth, kAllVisible, {Seg(50, 101, 150, 101)})
+                       .Recall(),
+                   1.0);
   // Rotated by 10 deg about the midpoint: only the angle fails.
   const double a = 10 * M_PI / 180, h = 50;
-  const Segment2DScores s = EvaluateSegments2D(TestCamera(), TestPose(), truth, kAllVisible,
+  const Segment2DScores s = EvaluateSegments2D(eval_test::NadirTestCamera(),
+                                               eval_test::NadirTestPose(), truth, kAllVisible,
                                                {Seg(100 - h * std::cos(a), 100 - h * std::sin(a),
                                                     100 + h * std::cos(a), 100 + h * std::sin(a))});
   EXPECT_DOUBLE_EQ(s.Recall(), 0.0);
@@ -87,9 +74,9 @@ TEST(Segments2DEval, HalfCoveredAndNonRoofKinds) {
   const std::vector<sim::TrueEdge> truth = {Edge(-10, 0, 10, 0, sim::EdgeKind::kHip),
                                             Edge(-10, 10, 10, 10, sim::EdgeKind::kGroundMarking)};
   // Half of the hip; all of the marking (y = 50); a false segment at y = 150.
-  const Segment2DScores s =
-      EvaluateSegments2D(TestCamera(), TestPose(), truth, kAllVisible,
-                         {Seg(50, 100, 100, 100), Seg(50, 50, 150, 50), Seg(50, 150, 150, 150)});
+  const Segment2DScores s = EvaluateSegments2D(
+      eval_test::NadirTestCamera(), eval_test::NadirTestPose(), truth, kAllVisible,
+      {Seg(50, 100, 100, 100), Seg(50, 50, 150, 50), Seg(50, 150, 150, 150)});
   // Markings do not count in roof recall; the 1.5 px tolerance reaches past
   // the segment end by up to 2 samples.
   EXPECT_NEAR(s.Recall(), 0.51, 0.015);
@@ -107,8 +94,9 @@ TEST(Segments2DEval, OccludedEdgesAreExcluded) {
                                             Edge(-10, 5, 10, 5, sim::EdgeKind::kRidge)};
   cv::Mat depth(200, 200, CV_32F, cv::Scalar(100.0f));
   depth.rowRange(60, 90).setTo(60.0f);
-  const Segment2DScores s = EvaluateSegments2D(TestCamera(), TestPose(), truth,
-                                               DepthMapVisibility(depth), {Seg(50, 100, 150, 100)});
+  const Segment2DScores s =
+      EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(), truth,
+                         DepthMapVisibility(depth), {Seg(50, 100, 150, 100)});
   EXPECT_DOUBLE_EQ(s.per_edge[1].length_px, 0.0);
   EXPECT_NEAR(s.per_edge[0].length_px, 100.0, 1.0);
   EXPECT_DOUBLE_EQ(s.Recall(), 1.0);
@@ -116,7 +104,8 @@ TEST(Segments2DEval, OccludedEdgesAreExcluded) {
   depth.setTo(100.0f);
   depth(cv::Rect(0, 60, 100, 30)).setTo(60.0f);
   const Segment2DScores h =
-      EvaluateSegments2D(TestCamera(), TestPose(), truth, DepthMapVisibility(depth), {});
+      EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(), truth,
+                         DepthMapVisibility(depth), {});
   EXPECT_NEAR(h.per_edge[1].length_px, 50.0, 1.5);
 }
 
@@ -126,13 +115,14 @@ TEST(Segments2DEval, FaceBorderVisibleThroughTheProbeInside) {
   const std::vector<sim::TrueEdge> truth = {Edge(-10, 0, 10, 0, sim::EdgeKind::kEave)};
   cv::Mat depth(200, 200, CV_32F, cv::Scalar(110.0f));
   depth.rowRange(0, 100).setTo(100.0f);
-  const Segment2DScores s = EvaluateSegments2D(TestCamera(), TestPose(), truth,
-                                               DepthMapVisibility(depth), {Seg(50, 100, 150, 100)});
+  const Segment2DScores s =
+      EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(), truth,
+                         DepthMapVisibility(depth), {Seg(50, 100, 150, 100)});
   EXPECT_NEAR(s.roof.length_px, 100.0, 1.0);
   // Nothing on either side agrees: hidden (e.g. under a tree).
   depth.setTo(std::numeric_limits<float>::infinity());
-  EXPECT_DOUBLE_EQ(EvaluateSegments2D(TestCamera(), TestPose(), truth, DepthMapVisibility(depth),
-                                      {Seg(50, 100, 150, 100)})
+  EXPECT_DOUBLE_EQ(EvaluateSegments2D(eval_test::NadirTestCamera(), eval_test::NadirTestPose(),
+                                      truth, DepthMapVisibility(depth), {Seg(50, 100, 150, 100)})
                        .roof.length_px,
                    0.0);
 }
@@ -141,7 +131,8 @@ TEST(Segments2DEval, ShortAndOutsideEdgesAreNotCounted) {
   // 2 m = 10 px long: below 15 px. The second lies outside the image.
   const std::vector<sim::TrueEdge> truth = {Edge(0, 0, 2, 0, sim::EdgeKind::kRidge),
                                             Edge(30, 0, 40, 0, sim::EdgeKind::kRidge)};
-  const Segment2DScores s = EvaluateSegments2D(TestCamera(), TestPose(), truth, kAllVisible, {});
+  const Segment2DScores s = EvaluateSegments2D(eval_test::NadirTestCamera(),
+                                               eval_test::NadirTestPose(), truth, kAllVisible, {});
   EXPECT_DOUBLE_EQ(s.roof.length_px, 0.0);
   EXPECT_DOUBLE_EQ(s.Recall(), 0.0);
 }

@@ -45,6 +45,22 @@ Building Solid(const std::string& id, const std::vector<Eigen::Vector2d>& fp, do
 
 }  // namespace
 
+Camera NadirTestCamera() {
+  Camera c;
+  c.width = 200;
+  c.height = 200;
+  c.fx = c.fy = 500;
+  c.cx = c.cy = 100;
+  return c;
+}
+
+Pose NadirTestPose(double x, double y) {
+  Pose p;
+  p.R << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+  p.C = V(x, y, 100);
+  return p;
+}
+
 Building Box(const std::string& id, double x0, double y0, double l, double w, double z0, double h) {
   const double x1 = x0 + l, y1 = y0 + w, z = z0 + h;
   return Solid(

@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
+#include "algorithms/geometry/camera.h"
 #include "algorithms/geometry/segment3.h"
+#include "algorithms/geometry/view.h"
 
 // Small LoD2 fixtures for the evaluator's tests: closed solids with outward
 // rings (exterior counter-clockwise seen from outside). Independent of
@@ -25,6 +27,12 @@ Building Hip(const std::string& id, double x0, double y0, double l, double w, do
 // Box 10x8 at x=0, gable 12x8 (rise 3) at x=40, hip 14x10 (rise 4) at x=80,
 // all at y=0, ground z=30, eaves 6 m up: 7 roof planes.
 CityModel ThreeHouses();
+
+// A 200 x 200 px camera (focal 500 px, principal point in the middle)
+// looking straight down from 100 m above (x, y, 0): world (X, Y, 0) images
+// at pixel (100 + 5 (X - x), 100 - 5 (Y - y)), at depth 100 - Z.
+Camera NadirTestCamera();
+Pose NadirTestPose(double x = 0, double y = 0);
 
 // Every vertex mapped through f.
 CityModel Transformed(const CityModel& m,

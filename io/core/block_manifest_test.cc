@@ -387,15 +387,32 @@ std::string WriteLinearDtm(const std::string& path, double lon0, double lat0, do
   return path;
 }
 
+// A linear DTM in geographic coordinates about the synthetic block's middle
+// (UTM 33N 400600, 5800350), written to `path`.
+struct LinearDtm {
+  std::string path;
+  double lat0 = 0, lon0 = 0, slope_lon = 0, slope_lat = 0;
+};
+
+LinearDtm LinearDtmUnderSyntheticBlock(const std::string& path) {
+  const GeographicLib::TransverseMercator tm(kGrs80A, kGrs80F, GeographicLib::Constants::UTM_k0());
+  LinearDtm d;
+  double g, k;
+  tm.Reverse(15.0, 400600.0 - 500000.0, 5800350.0, d.lat0, d.lon0, g, k);
+  d.path = WriteLinearDtm(path, d.lon0, d.lat0, &d.slope_lon, &d.slope_lat);
+  return d;
+}
+
 TEST(BlockManifest, DtmInAnotherCrsIsResampledIntoTheLocalFrame) {
   const std::string dir = testing::TempDir();
   BlockManifest m = SyntheticBlock(dir);
   m.ground_height.reset();
+  const LinearDtm dtm = LinearDtmUnderSyntheticBlock(dir + "/dtm.tif");
+  const double lat0 = dtm.lat0, lon0 = dtm.lon0, slope_lon = dtm.slope_lon,
+               slope_lat = dtm.slope_lat;
+  m.dtm = dtm.path;
   const GeographicLib::TransverseMercator tm(kGrs80A, kGrs80F, GeographicLib::Constants::UTM_k0());
-  double lat0, lon0, g, k;
-  tm.Reverse(15.0, 400600.0 - 500000.0, 5800350.0, lat0, lon0, g, k);
-  double slope_lon, slope_lat;
-  m.dtm = WriteLinearDtm(dir + "/dtm.tif", lon0, lat0, &slope_lon, &slope_lat);
+  double g, k;
   const Block block = ManifestToBlock(m);
   ASSERT_TRUE(block.ground.grid.has_value());
   const GroundModel::Grid& grid = *block.ground.grid;
@@ -436,12 +453,7 @@ TEST(BlockManifest, ASurfaceModelGivesTheTerrainUnderIt) {
   const std::string dir = testing::TempDir();
   BlockManifest m = SyntheticBlock(dir);
   m.ground_height.reset();
-  const GeographicLib::TransverseMercator tm(kGrs80A, kGrs80F, GeographicLib::Constants::UTM_k0());
-  double lat0, lon0, g, k;
-  tm.Reverse(15.0, 400600.0 - 500000.0, 5800350.0, lat0, lon0, g, k);
-  double slope_lon, slope_lat;
-  const std::string raster =
-      WriteLinearDtm(dir + "/surface.tif", lon0, lat0, &slope_lon, &slope_lat);
+  const std::string raster = LinearDtmUnderSyntheticBlock(dir + "/surface.tif").path;
   BlockManifest as_dtm = m, as_dsm = m;
   as_dtm.dtm = raster;
   as_dsm.dsm = raster;
