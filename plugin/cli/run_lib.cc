@@ -669,7 +669,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   t0 = Clock::now();
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
-  const RunStage assembly_stage{"", "", Since(t0)};
+  const double assembly_seconds = Since(t0);
   t0 = Clock::now();
   const std::string support_result = ApplyEdgeSupport(block, images, r, &assembled, &out.rejected);
   const RunStage support_stage{"edge support", support_result, Since(t0)};
@@ -691,7 +691,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                 : std::string()) +
            (assembled.party_cuts > 0 ? StrFormat(", %d cut at party walls", assembled.party_cuts)
                                      : std::string()),
-       assembly_stage.seconds});
+       assembly_seconds});
   out.stages.push_back(support_stage);
 
   t0 = Clock::now();
