@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <string>
 
 #include "algorithms/core/error.h"
@@ -47,6 +48,8 @@ void ValidateOptions(const EdgeOptions& o) {
   Require(finite(o.merge_max_angle) && o.merge_max_angle >= 0, "merge_max_angle must be >= 0");
   Require(finite(o.merge_max_offset) && o.merge_max_offset >= 0, "merge_max_offset must be >= 0");
   Require(finite(o.min_length) && o.min_length >= 0, "min_length must be >= 0");
+  Require(finite(o.coarse_min_length) && o.coarse_min_length >= 0,
+          "coarse_min_length must be >= 0");
   Require(finite(o.side_distance) && o.side_distance >= 0, "side_distance must be >= 0");
   Require(finite(o.fuse_max_distance) && finite(o.fuse_max_angle) && finite(o.fuse_min_overlap) &&
               o.fuse_min_overlap >= 0 && o.fuse_min_overlap <= 1,
@@ -120,6 +123,31 @@ Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const 
   return out;
 }
 
+// ExtractWithMethod on the image averaged down 2 x 2, the segments given
+// back in full-resolution pixels (EdgeOptions::coarse_fusion).
+Segments2D ExtractCoarse(const cv::Mat& image, const EdgeOptions& o) {
+  const int w = image.cols / 2, h = image.rows / 2;
+  if (w < 3 || h < 3) return {};
+  cv::Mat half;
+  cv::resize(image, half, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+  // INTER_AREA maps the image corners onto each other, so corner-convention
+  // coordinates scale by the size ratio (2, or a little more for odd sizes).
+  const double sx = static_cast<double>(image.cols) / w, sy = static_cast<double>(image.rows) / h;
+  EdgeOptions co = o;
+  co.min_length = o.coarse_min_length / sx;
+  Segments2D out = ExtractWithMethod(half, o.method, co, nullptr);
+  for (Segment2D& s : out) {
+    s.p0 = Eigen::Vector2d(s.p0.x() * sx, s.p0.y() * sy);
+    s.p1 = Eigen::Vector2d(s.p1.x() * sx, s.p1.y() * sy);
+    // Gradient and residual per full-resolution pixel.
+    s.contrast = static_cast<float>(s.contrast / sx);
+    s.rms_residual = static_cast<float>(s.rms_residual * sx);
+    s.scale = 2;
+    MeasureSideColours(s, image, o.side_distance * sx);
+  }
+  return out;
+}
+
 }  // namespace
 
 Segments2D ExtractSegments(const cv::Mat& image, const EdgeOptions& options, EdgeStats* stats) {
@@ -135,6 +163,10 @@ Segments2D ExtractSegments(const cv::Mat& image, const EdgeOptions& options, Edg
     if (input.channels() == 1 || extra == options.method) continue;
     AddMissingSegments(segments, ExtractWithMethod(input, extra, options, nullptr),
                        options.fuse_max_distance, options.fuse_max_angle, options.fuse_min_overlap);
+  }
+  if (options.coarse_fusion) {
+    AddUncoveredParts(segments, ExtractCoarse(input, options), options.fuse_max_distance,
+                      options.fuse_max_angle, options.min_length);
   }
   if (options.mark_texture) {
     const std::vector<bool> texture = MarkRepetitiveTexture(segments, options);

@@ -4,8 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "algorithms/core/error.h"
+#include "algorithms/edges/segment_fusion.h"
 #include "algorithms/edges/segment_geometry.h"
 #include "algorithms/edges/synthetic_images.h"
 
@@ -242,6 +245,76 @@ TEST(ExtractSegments, FusionAddsTheEdgesOnlyTheOtherMethodSees) {
   int from_max = 0;
   for (const auto& s : fused) from_max += s.method == GradientMethod::kMax ? 1 : 0;
   EXPECT_GE(from_max, 1);
+}
+
+// A hip between two tiled faces: each face carries dark tile courses every
+// 6 px along its own eave (horizontal on one side, vertical on the other),
+// the faces differ in shading, and the hip runs at 45° between them, so
+// the courses meet it at 45° on both sides.
+// A hip between two tiled faces: each face carries tile courses, 10 %
+// darker, every 8 px along its own eave (horizontal on one side, vertical on
+// the other), the faces differ in shading by 15 %, and the hip runs at 45°
+// between them, so the courses meet it at 45° on both sides. (With courses
+// 20 % darker, neither scale finds it.)
+TEST(ExtractSegments, CoarseFusionFindsTheHipBetweenTiledFaces) {
+  const cv::Size size(240, 240);
+  const cv::Vec3f light(0.62f, 0.30f, 0.22f), shaded = light * 0.85f;
+  auto course = [](double v) { return std::fmod(v, 8.0) < 2.0; };
+  cv::Mat image = RenderRegions(
+      size,
+      [&](double x, double y) {
+        const bool above = y < x;  // the hip is the diagonal y = x
+        return above ? (course(y) ? 1 : 0) : (course(x) ? 3 : 2);
+      },
+      {light, light * 0.9f, shaded, shaded * 0.9f}, 4);
+  AddNoise(image, 0.004, 9);
+  const Segment2D hip = TrueEdge({120, 120}, 45, size, 30);
+
+  const Segments2D alone = ExtractSegments(image, EdgeOptions{});
+  EdgeOptions coarse;
+  coarse.coarse_fusion = true;
+  const Segments2D fused = ExtractSegments(image, coarse);
+
+  double covered_alone = 0, covered_fused = 0;
+  int from_coarse = 0;
+  for (const auto& s : alone) covered_alone += CoveredFraction(hip, s, 2.0, 5.0);
+  for (const auto& s : fused) {
+    covered_fused += CoveredFraction(hip, s, 2.0, 5.0);
+    from_coarse += s.scale == 2 ? 1 : 0;
+  }
+  EXPECT_LT(covered_alone, 0.3);
+  EXPECT_GT(covered_fused, 0.8);
+  EXPECT_GE(from_coarse, 1);
+  // What the full resolution found stays as it was.
+  int full_resolution = 0;
+  for (const auto& s : fused) full_resolution += s.scale == 1 ? 1 : 0;
+  EXPECT_EQ(full_resolution, static_cast<int>(alone.size()));
+}
+
+TEST(AddUncoveredParts, AddsOnlyTheGapsLongEnough) {
+  auto seg = [](double x0, double y0, double x1, double y1) {
+    Segment2D s;
+    s.p0 = {x0, y0};
+    s.p1 = {x1, y1};
+    s.support = 100;
+    return s;
+  };
+  // Covered over [0, 40] and [50, 70] (1 px off the line), not beyond 70.
+  Segments2D base = {seg(0, 10, 40, 10), seg(50, 11, 70, 11), seg(80, 40, 100, 60)};
+  const Segments2D extra = {seg(0, 10, 100, 10)};
+  EXPECT_EQ(AddUncoveredParts(base, extra, 2.0, 5.0, 15.0), 1);
+  ASSERT_EQ(base.size(), 4u);
+  // The 10 px gap is too short; [70, 100] is added with the attributes of
+  // its segment and its share of the support.
+  EXPECT_NEAR(base[3].p0.x(), 70, 1e-9);
+  EXPECT_NEAR(base[3].p1.x(), 100, 1e-9);
+  EXPECT_NEAR(base[3].p0.y(), 10, 1e-9);
+  EXPECT_EQ(base[3].support, 30);
+  // A segment that is present is not added again, nor one too short.
+  Segments2D again = base;
+  EXPECT_EQ(AddUncoveredParts(again, {seg(5, 10, 35, 10), seg(0, 30, 10, 30)}, 2.0, 5.0, 15.0), 0);
+  // Beyond the distance nothing covers it.
+  EXPECT_EQ(AddUncoveredParts(again, {seg(0, 14, 40, 14)}, 2.0, 5.0, 15.0), 1);
 }
 
 TEST(ExtractSegments, Deterministic) {

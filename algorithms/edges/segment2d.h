@@ -40,6 +40,9 @@ struct Segment2D {
   // EdgeOptions::mark_texture): a real image edge, but no edge of the
   // scene's geometry, and ambiguous to match.
   bool texture = false;
+  // Image scale the segment was found at: 1 at full resolution, 2 from the
+  // coarse pass over the half-resolution image (EdgeOptions::coarse_fusion).
+  std::uint8_t scale = 1;
 
   double Length() const { return (p1 - p0).norm(); }
   Eigen::Vector2d Direction() const { return (p1 - p0).normalized(); }

@@ -13,4 +13,14 @@ namespace roofsweep {
 int AddMissingSegments(Segments2D& base, const Segments2D& extra, double max_distance,
                        double max_angle_deg, double min_overlap);
 
+// The coarse-scale fusion (EdgeOptions::coarse_fusion): appends to `base`
+// the parts of each segment of `extra` that the segments of `base` (as
+// given, not what this call appends) leave uncovered, i.e. where no
+// segment of `base` lies within `max_distance` px and `max_angle_deg` of it
+// (the union of their CoveredInterval), when such a part is at least
+// `min_length` long. The parts keep the attributes of their segment.
+// Returns the number of segments added.
+int AddUncoveredParts(Segments2D& base, const Segments2D& extra, double max_distance,
+                      double max_angle_deg, double min_length);
+
 }  // namespace roofsweep

@@ -44,24 +44,30 @@ double LineAngleDeg(const Segment2D& a, const Segment2D& b) {
   return std::atan2(std::fabs(Cross(da, db)), std::fabs(da.dot(db))) * 180.0 / kPi;
 }
 
-double CoveredFraction(const Segment2D& target, const Segment2D& candidate, double max_distance,
-                       double max_angle_deg) {
+bool CoveredInterval(const Segment2D& target, const Segment2D& candidate, double max_distance,
+                     double max_angle_deg, double& lo, double& hi) {
   const double length = target.Length();
-  if (!(length > 0) || !(candidate.Length() > 0)) return 0;
-  if (LineAngleDeg(target, candidate) > max_angle_deg) return 0;
+  if (!(length > 0) || !(candidate.Length() > 0)) return false;
+  if (LineAngleDeg(target, candidate) > max_angle_deg) return false;
   const Eigen::Vector2d d = target.Direction();
   const Eigen::Vector2d n(d.y(), -d.x());
   const double t0 = (candidate.p0 - target.p0).dot(d);
   const double t1 = (candidate.p1 - target.p0).dot(d);
   const double r0 = (candidate.p0 - target.p0).dot(n);
   const double r1 = (candidate.p1 - target.p0).dot(n);
-  const double lo = std::max(std::min(t0, t1), 0.0);
-  const double hi = std::min(std::max(t0, t1), length);
-  if (hi <= lo) return 0;
+  lo = std::max(std::min(t0, t1), 0.0);
+  hi = std::min(std::max(t0, t1), length);
+  if (hi <= lo) return false;
   // The candidate's offset from the target line is linear in t.
   auto offset_at = [&](double t) { return t1 == t0 ? r0 : r0 + (r1 - r0) * (t - t0) / (t1 - t0); };
-  if (std::fabs(offset_at(lo)) > max_distance || std::fabs(offset_at(hi)) > max_distance) return 0;
-  return (hi - lo) / length;
+  return std::fabs(offset_at(lo)) <= max_distance && std::fabs(offset_at(hi)) <= max_distance;
+}
+
+double CoveredFraction(const Segment2D& target, const Segment2D& candidate, double max_distance,
+                       double max_angle_deg) {
+  double lo = 0, hi = 0;
+  if (!CoveredInterval(target, candidate, max_distance, max_angle_deg, lo, hi)) return 0;
+  return (hi - lo) / target.Length();
 }
 
 }  // namespace roofsweep

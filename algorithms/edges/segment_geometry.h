@@ -22,6 +22,12 @@ double LineAngleDeg(const Segment2D& a, const Segment2D& b);
 // counts when both its ends lie within `max_distance` of `target`'s line.
 // Orientation is ignored. Used for "already present" in the fusion step
 // and for comparing with reference segments.
+// The part of `target` that `candidate` covers, by the rule of
+// CoveredFraction, as distances [lo, hi] from target.p0 along it; false when
+// it covers nothing.
+bool CoveredInterval(const Segment2D& target, const Segment2D& candidate, double max_distance,
+                     double max_angle_deg, double& lo, double& hi);
+
 double CoveredFraction(const Segment2D& target, const Segment2D& candidate, double max_distance,
                        double max_angle_deg);
 

@@ -119,7 +119,9 @@ int Main(int argc, char** argv) {
       return 2;
     }
   }
-  const std::vector<std::string> methods = {"max", "max-tex", "dizenzo", "grey", "lsd"};
+  // "+2x": with the coarse-scale fusion (EdgeOptions::coarse_fusion).
+  const std::vector<std::string> methods = {"max",     "max-tex", "max+2x", "max-tex+2x",
+                                            "dizenzo", "grey",    "lsd"};
   std::map<std::string, Totals> totals;
   std::set<EdgeKind> seen_kinds;
   double isoluminant_buildings = 0, buildings = 0;
@@ -173,12 +175,13 @@ int Main(int argc, char** argv) {
           segments = Lsd(r.images[v], 15.0);
         } else {
           EdgeOptions eo;
-          eo.method = m == "max" || m == "max-tex" ? GradientMethod::kMax
-                      : m == "dizenzo"             ? GradientMethod::kDiZenzo
-                                                   : GradientMethod::kGrey;
+          eo.method = m.rfind("max", 0) == 0 ? GradientMethod::kMax
+                      : m == "dizenzo"       ? GradientMethod::kDiZenzo
+                                             : GradientMethod::kGrey;
+          eo.coarse_fusion = m.find("+2x") != std::string::npos;
           segments = ExtractSegments(image, eo);
           // What matching takes (MatchOptions::match_texture).
-          if (m == "max-tex")
+          if (m.rfind("max-tex", 0) == 0)
             segments.erase(std::remove_if(segments.begin(), segments.end(),
                                           [](const Segment2D& g) { return g.texture; }),
                            segments.end());

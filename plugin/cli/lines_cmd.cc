@@ -24,6 +24,9 @@ int Lines(const std::vector<std::string>& args, Context& ctx) {
       .Option("-method|--method", &method, "max|dizenzo|grey",
               "gradient fusion of the colour bands (max)")
       .Option("-min-length|--min-length", &min_length, "PX", "shortest segment kept (15)")
+      .Flag("-coarse_edges|--coarse-edges", &r.edges.coarse_fusion,
+            "also take the edges found at half resolution where no full-resolution segment "
+            "lies (hips and valleys broken up by tile courses; attribute scale = 2)")
       .Option("-png|--png", &r.png_dir, "DIR", "also write <layer>.png overlays into DIR")
       .KeyValues("-dsco", &r.dataset_options,
                  "GDAL dataset creation option (e.g. GPKG VERSION=1.2)")

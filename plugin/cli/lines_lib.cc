@@ -81,6 +81,7 @@ LayerFeature ToFeature(const Segment2D& s) {
   f.reals["rms_residual_px"] = s.rms_residual;
   f.integers["support"] = s.support;
   f.integers["texture"] = s.texture;
+  f.integers["scale"] = s.scale;
   f.strings["band"] = BandName(s.band);
   f.strings["method"] = MethodName(s.method);
   f.strings["colour_left"] = Hex(s.colour_left);

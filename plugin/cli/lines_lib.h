@@ -41,7 +41,8 @@ std::string LinesLayerName(const std::string& image_path);
 // in image pixel coordinates: x right, y down, origin at the top-left
 // CORNER of the top-left pixel, no CRS. Fields per segment: length_px,
 // direction_deg (atan2(dy, dx) from p0 to p1, image axes, y down),
-// contrast, band, method, rms_residual_px, support, colour_left,
+// contrast, band, method, rms_residual_px, support, texture, scale
+// (Segment2D::scale), colour_left,
 // colour_right (#rrggbb; the brighter side is on the left walking p0->p1).
 // Images are processed in parallel; the output does not depend on the
 // thread count. Any unreadable image refuses the whole block (nothing is

@@ -31,7 +31,7 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Option("-truth", &r.truth, "FILE",
               "groundtruth_edges.json of `roofsweep simulate` (true-pair counts and line scores), "
               "or an Oxford VGG set folder (match precision/recall against nview-lines)");
-  flags.Add(p, &r.match);
+  flags.Add(p, &r.match, &r.edges);
   p.Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
   if (!p.Parse(args)) return 0;

@@ -2,14 +2,19 @@
 
 namespace roofsweep::cli {
 
-void MatchFlags::Add(ArgParser& p, MatchOptions* o) {
+void MatchFlags::Add(ArgParser& p, MatchOptions* o, EdgeOptions* edges) {
   options_ = o;
+  edges_ = edges;
+  coarse_edges_ = edges->coarse_fusion;
   seed_ = static_cast<int>(o->seed);
   p.Option("-min_length", &o->min_length, "PX", "shortest segment matched (default 15)")
       .Option("-seed", &seed_, "N",
               "seed of matching's random draws: the segments that calibrate the chromatic "
               "thresholds, the subsets of the robust colour estimates (default 1; another seed "
               "shows how much the result depends on them)")
+      .Flag("-coarse_edges", &coarse_edges_,
+            "also take the edges found at half resolution where no full-resolution segment "
+            "lies (hips and valleys broken up by tile courses)")
       .Flag("-match_texture", &match_texture_,
             "also match the segments marked as periodic texture (tile courses, brick rows: "
             "parallel edges of one polarity at a regular spacing on both sides)")
@@ -35,6 +40,7 @@ void MatchFlags::Apply(const ArgParser& p) const {
   options_->junction_completion = !no_junctions_;
   options_->junction_ranking = !no_junction_ranking_;
   options_->match_texture = match_texture_;
+  edges_->coarse_fusion = coarse_edges_;
 }
 
 }  // namespace roofsweep::cli

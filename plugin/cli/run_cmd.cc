@@ -10,7 +10,7 @@ namespace {
 
 // Options shared by `run` and `sweep`, with the papers' defaults.
 void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
-  flags->Add(p, &r.match);
+  flags->Add(p, &r.match, &r.edges);
   p.Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
       .Option("-theta_max", &r.sweep.theta_max_deg, "DEG", "swept angle range end (default 75)")
       .Option("-min_similarity", &r.sweep.min_similarity, "S",

@@ -50,6 +50,18 @@ test_lines_writes_one_layer_per_image() {
   else
     fail lines_attributes "fields missing"
   fi
+  # The coarse-scale fusion only adds segments (scale 2) to the default ones.
+  expect_ok lines_coarse lines "$SIM" -o "$WORK/lines_coarse.gpkg" -coarse_edges -q || return
+  local fine coarse only_fine
+  fine=$(feature_count "$WORK/lines.gpkg" lines_s01_i001)
+  coarse=$(feature_count "$WORK/lines_coarse.gpkg" lines_s01_i001)
+  only_fine=$(ogrinfo -ro -q "$WORK/lines_coarse.gpkg" -sql \
+    "SELECT COUNT(*) AS n FROM lines_s01_i001 WHERE scale = 1" | sed -n 's/.*n (Integer.*) = //p')
+  if [[ -n "$coarse" && "$only_fine" == "$fine" && "$coarse" -ge "$fine" ]]; then
+    pass "lines_coarse_adds_only ($fine + $((coarse - fine)))"
+  else
+    fail lines_coarse_adds_only "default $fine, with -coarse_edges $coarse of which scale 1: '$only_fine'"
+  fi
   for i in 001 002; do
     local png="$WORK/png/lines_s01_i$i.png"
     if [[ -s "$png" ]] && gdalinfo "$png" | grep -q 'Size is 512, 512' &&
