@@ -21,7 +21,8 @@ struct ColourBreakOptions {
   // Only sloped faces: the break runs down the fall line, the direction a
   // party wall takes under a pitched roof.
   double min_slope_deg = 10.0;
-  // Plan-view sample spacing over the patch.
+  // Plan-view sample spacing over the patch; at least half a pixel of the
+  // finest view of the patch.
   double spacing_m = 0.1;
   // The colours compared on either side of a break are taken over this
   // width, leaving this gap at the break (the seam, a verge tile, the

@@ -59,6 +59,25 @@ TEST(FindColourBreaks, TwoHousesRoofedApartAreCutAtTheirPartyWall) {
   EXPECT_GT(std::abs(b[0][1].y() - b[0][0].y()), 4.0);
 }
 
+// At a quarter of the resolution (36 cm pixels) the samples are half a
+// pixel apart instead of 0.1 m, and the break is still found, to about one
+// sample.
+TEST(FindColourBreaks, CoarserImagesAreSampledPerHalfPixel) {
+  TestScene scene;
+  scene.quads = {Piece(-9, 1.5, kRedTiles, 3), Piece(1.5, 9, kGreySlate, 4)};
+  Block block = sweep_test::FourViewBlock();
+  Camera& cam = block.cameras[0];
+  cam.width = 160, cam.height = 120;
+  cam.fx = cam.fy = 250;
+  cam.cx = 80, cam.cy = 60;
+  const auto b = FindColourBreaks(block, sweep_test::RenderAll(scene, block), {FaceFrom(-9, 9)},
+                                  ColourBreakOptions())
+                     .at(0);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_NEAR(b[0][0].x(), 1.5, 0.3);
+  EXPECT_NEAR(b[0][1].x(), 1.5, 0.3);
+}
+
 TEST(FindColourBreaks, OneRoofingOverSeveralHousesHasNoBreak) {
   TestScene scene;
   scene.quads = {Piece(-9, 1.5, kRedTiles, 3), Piece(1.5, 9, kRedTiles, 4)};
