@@ -70,6 +70,20 @@ bool Shares(const std::vector<int>& a, const std::vector<int>& b) {
   return false;
 }
 
+// Marks the edges both label lists hold.
+void MarkShared(const std::vector<int>& a, const std::vector<int>& b, std::vector<char>* marked) {
+  for (int x : a)
+    for (int y : b)
+      if (x == y) (*marked)[x] = 1;
+}
+
+double MarkedLength(const std::vector<char>& marked, const std::vector<Segment3>& edges) {
+  double sum = 0;
+  for (size_t e = 0; e < edges.size(); ++e)
+    if (marked[e]) sum += (edges[e].b - edges[e].a).norm();
+  return sum;
+}
+
 struct Verified {
   PairHypothesis h;
   std::vector<std::pair<int, int>> support;  // (feature index, segment)
@@ -124,6 +138,14 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
             res.funnel.true_assigned = 0;
   }
 
+  std::vector<char> edges_all, edges_verified, edges_unambiguous, edges_assigned;
+  if (truth) {
+    for (auto* m : {&edges_all, &edges_verified, &edges_unambiguous, &edges_assigned})
+      m->assign(truth->size(), 0);
+  }
+  auto mark = [&](const PairHypothesis& h, std::vector<char>* m) {
+    MarkShared(labels[h.vi][h.si], labels[h.vj][h.sj], m);
+  };
   // With truth: the first two observations of a line carry one simulated edge.
   auto OnATrueEdge = [&](const Line3D& l) {
     const auto& [v0, s0] = l.observations[0];
@@ -268,7 +290,10 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
         // are no correspondence), whatever the angle and height limits.
         for (const PairHypothesis& h :
              GeometricCandidates(views[i], views[j], i, j, g, s, std::nullopt, loose))
-          if (Shares(labels[i][s], labels[j][h.sj])) ++res.funnel.true_all;
+          if (Shares(labels[i][s], labels[j][h.sj])) {
+            ++res.funnel.true_all;
+            MarkShared(labels[i][s], labels[j][h.sj], &edges_all);
+          }
       }
     }
   }
@@ -301,7 +326,10 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   hyps = std::move(kept);
   res.funnel.verified = static_cast<long long>(hyps.size());
   if (truth)
-    for (const Verified& v : hyps) res.funnel.true_verified += v.h.true_pair == 1;
+    for (const Verified& v : hyps) {
+      res.funnel.true_verified += v.h.true_pair == 1;
+      if (v.h.true_pair == 1) mark(v.h, &edges_verified);
+    }
   res.timings.verify_s = Seconds(t0);
 
   // One-to-one assignment.
@@ -336,7 +364,10 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   for (size_t n = 0; n < items.size(); ++n)
     if (!items[n].keys.empty()) {
       ++res.funnel.unambiguous;
-      if (truth) res.funnel.true_unambiguous += hyps[n].h.true_pair == 1;
+      if (truth && hyps[n].h.true_pair == 1) {
+        ++res.funnel.true_unambiguous;
+        mark(hyps[n].h, &edges_unambiguous);
+      }
     }
   const auto assigned = AssignOneToOne(items);
   res.timings.assign_s = Seconds(t0);
@@ -352,7 +383,16 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     if (!assigned[n].empty()) track_of.push_back(static_cast<int>(n));
   res.funnel.assigned = static_cast<long long>(track_of.size());
   if (truth)
-    for (int n : track_of) res.funnel.true_assigned += hyps[n].h.true_pair == 1;
+    for (int n : track_of) {
+      res.funnel.true_assigned += hyps[n].h.true_pair == 1;
+      if (hyps[n].h.true_pair == 1) mark(hyps[n].h, &edges_assigned);
+    }
+  if (truth) {
+    res.funnel.true_edges_all_m = MarkedLength(edges_all, *truth);
+    res.funnel.true_edges_verified_m = MarkedLength(edges_verified, *truth);
+    res.funnel.true_edges_unambiguous_m = MarkedLength(edges_unambiguous, *truth);
+    res.funnel.true_edges_assigned_m = MarkedLength(edges_assigned, *truth);
+  }
   std::vector<Line3D> lines(track_of.size());
   std::vector<char> ok(track_of.size(), 0);
   auto estimate = [&](const std::vector<std::pair<int, int>>& obs_keys, const Segment3& init,
@@ -520,24 +560,31 @@ std::string FormatFunnel(const MatchFunnel& f) {
       << " view pairs, " << f.segments << " segments:\n";
   const bool t = f.true_all >= 0;
   std::snprintf(buf, sizeof buf, "  %-28s %12s%s\n", "stage", "pairs",
-                t ? "   true pairs  kept" : "");
+                t ? "   true pairs  kept   true edges (m)  kept" : "");
   out << buf;
-  auto row = [&](const char* name, long long n, long long tn) {
+  auto row = [&](const char* name, long long n, long long tn, double edges_m = -1) {
     if (t) {
-      std::snprintf(buf, sizeof buf, "  %-28s %12lld %12lld %5.1f%%\n", name, n, tn,
+      std::snprintf(buf, sizeof buf, "  %-28s %12lld %12lld %5.1f%%", name, n, tn,
                     f.true_all > 0 ? 100.0 * tn / f.true_all : 0.0);
+      out << buf;
+      if (edges_m >= 0) {
+        std::snprintf(buf, sizeof buf, " %16.1f %5.1f%%", edges_m,
+                      f.true_edges_all_m > 0 ? 100.0 * edges_m / f.true_edges_all_m : 0.0);
+        out << buf;
+      }
+      out << "\n";
     } else {
       std::snprintf(buf, sizeof buf, "  %-28s %12lld\n", name, n);
+      out << buf;
     }
-    out << buf;
   };
-  if (t) row("eligible true pairs", -1, f.true_all);
+  if (t) row("eligible true pairs", -1, f.true_all, f.true_edges_all_m);
   row("geometric", f.geometric, f.true_geometric);
   row("chromatic (integrated)", f.chromatic, f.true_chromatic);
   row("chromatic correlation", f.correlation, f.true_correlation);
-  row("verified in other views", f.verified, f.true_verified);
-  row("unambiguous", f.unambiguous, f.true_unambiguous);
-  row("one-to-one (final)", f.assigned, f.true_assigned);
+  row("verified in other views", f.verified, f.true_verified, f.true_edges_verified_m);
+  row("unambiguous", f.unambiguous, f.true_unambiguous, f.true_edges_unambiguous_m);
+  row("one-to-one (final)", f.assigned, f.true_assigned, f.true_edges_assigned_m);
   std::snprintf(buf, sizeof buf, "  3D lines: %d (before merging collinear fragments: %d)\n",
                 f.lines, f.lines_before_merge);
   out << buf;

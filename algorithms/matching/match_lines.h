@@ -60,6 +60,12 @@ struct MatchFunnel {
   // overlapping views, and how many of them survive each stage.
   long long true_all = -1, true_geometric = -1, true_chromatic = -1, true_correlation = -1,
             true_verified = -1, true_unambiguous = -1, true_assigned = -1;
+  // The same per true edge: the 3D length of the distinct true edges that
+  // at least one true pair of the stage lies on (several view pairs, and
+  // fragments, give one edge several true pairs; the one-to-one step keeps
+  // one of them by design, so the pairs fall faster than the edges).
+  double true_edges_all_m = -1, true_edges_verified_m = -1, true_edges_unambiguous_m = -1,
+         true_edges_assigned_m = -1;
 };
 
 struct MatchTimings {

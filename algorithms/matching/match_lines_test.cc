@@ -54,6 +54,12 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
     EXPECT_GE(f.correlation, f.verified);
     EXPECT_GE(f.verified, f.unambiguous);
     EXPECT_GE(f.unambiguous, f.assigned);
+    // Per true edge: each stage keeps a subset of the previous one's edges,
+    // and the final pairs lie on some.
+    EXPECT_GE(f.true_edges_all_m, f.true_edges_verified_m);
+    EXPECT_GE(f.true_edges_verified_m, f.true_edges_unambiguous_m);
+    EXPECT_GE(f.true_edges_unambiguous_m, f.true_edges_assigned_m);
+    if (f.true_assigned > 0) EXPECT_GT(f.true_edges_assigned_m, 0);
     // One-to-one: no (view, segment) in two lines before merging.
     std::set<std::pair<int, int>> used;
     size_t obs = 0;
