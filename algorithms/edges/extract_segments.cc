@@ -94,8 +94,10 @@ bool LongerFirst(const Segment2D& a, const Segment2D& b) {
   return a.p1.y() < b.p1.y();
 }
 
+// `side_colours`: false leaves them to the caller (the coarse pass measures
+// them on the full-resolution image).
 Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const EdgeOptions& o,
-                             EdgeStats* stats) {
+                             EdgeStats* stats, bool side_colours = true) {
   if (image.channels() == 1) method = GradientMethod::kGrey;
   const GradientField gradient = ComputeGradient(GradientPlanes(image, method), method, o.sigma);
   const HysteresisThresholds t = ChooseThresholds(gradient.magnitude, o);
@@ -109,7 +111,7 @@ Segments2D ExtractWithMethod(const cv::Mat& image, GradientMethod method, const 
   for (const LinePiece& piece : pieces) {
     if (piece.fit.Length() + 1.0 < o.min_length) continue;  // see PieceToSegment
     Segment2D s = PieceToSegment(piece, map, gradient);
-    MeasureSideColours(s, image, o.side_distance);
+    if (side_colours) MeasureSideColours(s, image, o.side_distance);
     out.push_back(s);
   }
   if (stats) {
@@ -135,7 +137,7 @@ Segments2D ExtractCoarse(const cv::Mat& image, const EdgeOptions& o) {
   const double sx = static_cast<double>(image.cols) / w, sy = static_cast<double>(image.rows) / h;
   EdgeOptions co = o;
   co.min_length = o.coarse_min_length / sx;
-  Segments2D out = ExtractWithMethod(half, o.method, co, nullptr);
+  Segments2D out = ExtractWithMethod(half, o.method, co, nullptr, false);
   for (Segment2D& s : out) {
     s.p0 = Eigen::Vector2d(s.p0.x() * sx, s.p0.y() * sy);
     s.p1 = Eigen::Vector2d(s.p1.x() * sx, s.p1.y() * sy);

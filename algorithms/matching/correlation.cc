@@ -40,7 +40,9 @@ namespace {
 
 struct Strip {
   int cols = 0, rows = 0;
-  std::vector<float> b1, b2, b3;  // bands (a*, b*, L*) or (L*, L*, L*)
+  // Bands (a*, b*, L*) or (L*, L*, L*); b3 is empty unless
+  // MatchOptions::correlate_lightness.
+  std::vector<float> b1, b2, b3;
   std::vector<char> valid;
 };
 
@@ -68,7 +70,10 @@ void ResetStrip(int cols, const MatchOptions& o, Strip* st) {
   st->rows = std::max(1, static_cast<int>(std::lround(o.region_width)));
   st->b1.assign(st->cols * st->rows, 0.f);
   st->b2.assign(st->cols * st->rows, 0.f);
-  st->b3.assign(st->cols * st->rows, 0.f);
+  if (o.correlate_lightness)
+    st->b3.assign(st->cols * st->rows, 0.f);
+  else
+    st->b3.clear();
   st->valid.assign(st->cols * st->rows, 0);
 }
 
@@ -79,7 +84,7 @@ void Store(const ViewFeatures& v, const SideColour& attr, double lo, double hi, 
   if (attr.valid && (lab[0] < lo || lab[0] > hi)) return;
   st->b1[idx] = v.grey ? lab[0] : lab[1];
   st->b2[idx] = v.grey ? lab[0] : lab[2];
-  st->b3[idx] = lab[0];
+  if (!st->b3.empty()) st->b3[idx] = lab[0];
   st->valid[idx] = 1;
 }
 

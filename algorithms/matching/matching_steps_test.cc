@@ -1,6 +1,7 @@
 // Unit tests of the matching steps on synthetic two-view setups.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
@@ -177,28 +178,43 @@ TEST(Correlation, NccBasics) {
   EXPECT_EQ(Ncc(a.data(), flat.data(), 5), 0.0);
 }
 
-TEST(Correlation, TruePairCorrelatesShiftedPairDoesNot) {
-  const Block b = TwoViewBlock(20);
-  MatchOptions o;
+// The 30 m line x = 0 on the ground of TwoViewBlock(20), seen in both views,
+// and in view 1 a false partner 4 m further east (same direction): the
+// true and the false candidate of the one segment in view 0, and per side
+// the correlation of each (SideCorrelation).
+struct ShiftedPair {
+  ViewFeatures v0, v1;
+  std::array<double, 2> good{}, bad{};
+};
+
+ShiftedPair CorrelateShiftedPair(const Block& b, const cv::Mat& i0, const cv::Mat& i1,
+                                 const MatchOptions& o) {
   const Eigen::Vector3d A(0, -15, 0), B(0, 15, 0);
-  const cv::Mat i0 = RenderGround(b, 0), i1 = RenderGround(b, 1);
   Segments2D s0 = {ProjectSeg(b, 0, A, B)};
-  // Segment 1 in view 1 is a false partner 4 m further east (same direction).
   Segments2D s1 = {ProjectSeg(b, 1, A, B),
                    ProjectSeg(b, 1, A + Eigen::Vector3d(4, 0, 0), B + Eigen::Vector3d(4, 0, 0))};
-  const ViewFeatures v0 = PrepareView(b, 0, i0, s0, o), v1 = PrepareView(b, 1, i1, s1, o);
-  const PairGeometry g = MakePairGeometry(v0, v1);
-  const auto c = GeometricCandidates(v0, v1, 0, 1, g, 0, std::nullopt, o);
-  ASSERT_EQ(c.size(), 2u);
+  ShiftedPair r{PrepareView(b, 0, i0, s0, o), PrepareView(b, 1, i1, s1, o)};
+  const PairGeometry g = MakePairGeometry(r.v0, r.v1);
+  const auto c = GeometricCandidates(r.v0, r.v1, 0, 1, g, 0, std::nullopt, o);
+  EXPECT_EQ(c.size(), 2u);
+  if (c.size() != 2) return r;
   for (int side = 0; side < 2; ++side) {
-    const double good = SideCorrelation(v0, v1, g, c[0], side, o);
-    const double bad = SideCorrelation(v0, v1, g, c[1], side, o);
-    EXPECT_GT(good, 1.5) << "side " << side;
-    EXPECT_LT(bad, 0.5) << "side " << side;
+    r.good[side] = SideCorrelation(r.v0, r.v1, g, c[0], side, o);
+    r.bad[side] = SideCorrelation(r.v0, r.v1, g, c[1], side, o);
+  }
+  return r;
+}
+
+TEST(Correlation, TruePairCorrelatesShiftedPairDoesNot) {
+  const Block b = TwoViewBlock(20);
+  const ShiftedPair r = CorrelateShiftedPair(b, RenderGround(b, 0), RenderGround(b, 1), {});
+  for (int side = 0; side < 2; ++side) {
+    EXPECT_GT(r.good[side], 1.5) << "side " << side;
+    EXPECT_LT(r.bad[side], 0.5) << "side " << side;
   }
   // The chromatic attributes of the true pair agree.
   for (int side = 0; side < 2; ++side) {
-    EXPECT_LT(MeanStatistic(v0.sides[0][side], v1.sides[0][side], 200), 13.82);
+    EXPECT_LT(MeanStatistic(r.v0.sides[0][side], r.v1.sides[0][side], 200), 13.82);
   }
 }
 
@@ -207,7 +223,6 @@ TEST(Correlation, TruePairCorrelatesShiftedPairDoesNot) {
 // false one (MatchOptions::correlate_lightness).
 TEST(Correlation, LightnessTellsPartnersApartOnGreyTexture) {
   const Block b = TwoViewBlock(20);
-  const Eigen::Vector3d A(0, -15, 0), B(0, 15, 0);
   auto grey = [&](int v) {
     cv::Mat g, rgb;
     cv::cvtColor(RenderGround(b, v), g, cv::COLOR_RGB2GRAY);
@@ -220,19 +235,12 @@ TEST(Correlation, LightnessTellsPartnersApartOnGreyTexture) {
     return rgb;
   };
   const cv::Mat i0 = grey(0), i1 = grey(1);
-  Segments2D s0 = {ProjectSeg(b, 0, A, B)};
-  Segments2D s1 = {ProjectSeg(b, 1, A, B),
-                   ProjectSeg(b, 1, A + Eigen::Vector3d(4, 0, 0), B + Eigen::Vector3d(4, 0, 0))};
   for (bool lightness : {true, false}) {
     MatchOptions o;
     o.correlate_lightness = lightness;
-    const ViewFeatures v0 = PrepareView(b, 0, i0, s0, o), v1 = PrepareView(b, 1, i1, s1, o);
-    const PairGeometry g = MakePairGeometry(v0, v1);
-    const auto c = GeometricCandidates(v0, v1, 0, 1, g, 0, std::nullopt, o);
-    ASSERT_EQ(c.size(), 2u);
+    const ShiftedPair r = CorrelateShiftedPair(b, i0, i1, o);
     for (int side = 0; side < 2; ++side) {
-      const double good = SideCorrelation(v0, v1, g, c[0], side, o);
-      const double bad = SideCorrelation(v0, v1, g, c[1], side, o);
+      const double good = r.good[side], bad = r.bad[side];
       if (lightness) {
         EXPECT_GT(good, 0.5) << "side " << side;
         EXPECT_GT(good - bad, 0.4) << "side " << side;
