@@ -341,7 +341,7 @@ Ring2 TrimmedPatch(const Ring2& patch, const SampleGrid& g, const Scores& at,
   }
   if (!refuted) return {};
   const int r = std::max(0, static_cast<int>(std::floor(o.trim_vote_radius_m / g.spacing)));
-  std::vector<Eigen::Vector2d> kept;
+  std::vector<int> at_cell(vote.size(), -1);  // grid point of each kept cell
   bool dropped = false;
   for (size_t i = 0; i < g.points.size(); ++i) {
     const int cx = g.cell[i] % g.nx, cy = g.cell[i] / g.nx;
@@ -349,13 +349,50 @@ Ring2 TrimmedPatch(const Ring2& patch, const SampleGrid& g, const Scores& at,
     for (int y = std::max(0, cy - r); y <= std::min(g.ny - 1, cy + r); ++y)
       for (int x = std::max(0, cx - r); x <= std::min(g.nx - 1, cx + r); ++x)
         if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) sum += vote[y * g.nx + x];
-    if (sum < 0) {
+    if (sum < 0)
+      dropped = true;
+    else
+      at_cell[g.cell[i]] = static_cast<int>(i);
+  }
+  // A face runs on from its lines: kept cells cut off from them by refuted
+  // ones are texture that happens to correlate at the wrong height (a few
+  // ground cells 2 m past an eave widened the hull back to the whole
+  // overshoot). Only the kept cells connected to the cells nearest each
+  // line stay; without lines, all of them.
+  std::vector<char> reached(vote.size(), lines.empty() || !o.trim_connected ? 1 : 0);
+  std::vector<int> stack;
+  for (const auto& l : lines) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i : at_cell)
+      if (i >= 0)
+        nearest = std::min(nearest, PointSegmentDistance(g.points[i].head<2>(), l[0], l[1]));
+    for (size_t c = 0; c < at_cell.size(); ++c)
+      if (at_cell[c] >= 0 && !reached[c] &&
+          PointSegmentDistance(g.points[at_cell[c]].head<2>(), l[0], l[1]) <=
+              nearest + 1.5 * g.spacing)
+        reached[c] = 1, stack.push_back(static_cast<int>(c));
+  }
+  while (!stack.empty()) {
+    const int c = stack.back();
+    stack.pop_back();
+    const int cx = c % g.nx, cy = c / g.nx;
+    for (int y = std::max(0, cy - 1); y <= std::min(g.ny - 1, cy + 1); ++y)
+      for (int x = std::max(0, cx - 1); x <= std::min(g.nx - 1, cx + 1); ++x) {
+        const int n = y * g.nx + x;
+        if (at_cell[n] >= 0 && !reached[n]) reached[n] = 1, stack.push_back(n);
+      }
+  }
+  std::vector<Eigen::Vector2d> kept;
+  for (size_t c = 0; c < at_cell.size(); ++c) {
+    if (at_cell[c] < 0) continue;
+    if (!reached[c]) {
       dropped = true;
       continue;
     }
+    const Eigen::Vector3d& q = g.points[at_cell[c]];
     for (const double dx : {-0.5, 0.5})
       for (const double dy : {-0.5, 0.5})
-        kept.emplace_back(g.points[i].x() + dx * g.spacing, g.points[i].y() + dy * g.spacing);
+        kept.emplace_back(q.x() + dx * g.spacing, q.y() + dy * g.spacing);
   }
   if (!dropped) return {};
   for (const auto& l : lines) kept.insert(kept.end(), l.begin(), l.end());
@@ -365,6 +402,67 @@ Ring2 TrimmedPatch(const Ring2& patch, const SampleGrid& g, const Scores& at,
   const double area = std::abs(SignedArea(patch));
   if (trimmed.size() < 3 || std::abs(SignedArea(trimmed)) >= (1 - 1e-3) * area) return {};
   return trimmed;
+}
+
+// Pixels per plan metre at X in the view nearest in plan (the reference
+// view of ScorePlane); 0 when no view sees X.
+double PixelsPerMetre(const Block& block, const Eigen::Vector3d& X) {
+  double best = std::numeric_limits<double>::infinity(), k = 0;
+  for (const View& view : block.views) {
+    const Camera& cam = block.CameraOf(view);
+    const auto p0 = Project(cam, view.pose, X);
+    const auto px = Project(cam, view.pose, X + Eigen::Vector3d(1, 0, 0));
+    const auto py = Project(cam, view.pose, X + Eigen::Vector3d(0, 1, 0));
+    if (!p0 || !px || !py) continue;
+    const double d = (view.pose.C - X).head<2>().norm();
+    if (d < best) best = d, k = 0.5 * ((*px - *p0).norm() + (*py - *p0).norm());
+  }
+  return k;
+}
+
+// The grid points farther than band_m (plan) from every line, with their
+// cells.
+SampleGrid OffLines(const SampleGrid& g, const std::vector<std::array<Eigen::Vector2d, 2>>& lines,
+                    double band_m) {
+  SampleGrid out;
+  out.spacing = g.spacing, out.nx = g.nx, out.ny = g.ny;
+  for (size_t i = 0; i < g.points.size(); ++i) {
+    const Eigen::Vector2d q = g.points[i].head<2>();
+    bool near = false;
+    for (const auto& l : lines)
+      if ((near = PointSegmentDistance(q, l[0], l[1]) <= band_m)) break;
+    if (near) continue;
+    out.points.push_back(g.points[i]);
+    out.cell.push_back(g.cell[i]);
+  }
+  return out;
+}
+
+// Why the plane is refused on its samples away from its lines (see
+// VerifyOptions::verify_off_lines); empty when it is not, or when too few
+// samples lie away from them to tell. `score` is the plane's mean Cor+
+// over all its samples.
+std::string OffLineRefusal(const Block& block, const std::vector<cv::Mat>& grey,
+                           const SampleGrid& grid, const RoofPlaneHypothesis& p, double score,
+                           const VerifyOptions& o) {
+  if (p.lines_xy.empty() || p.patch.empty()) return {};
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& q : p.patch) c += q;
+  c /= static_cast<double>(p.patch.size());
+  const double ppm = PixelsPerMetre(block, {c.x(), c.y(), PlaneZ(p.plane, c.x(), c.y())});
+  if (!(ppm > 0)) return {};
+  const SampleGrid off = OffLines(grid, p.lines_xy, o.off_line_band_px / ppm);
+  if (static_cast<int>(off.points.size()) < o.min_samples) return {};
+  const Scores away = ScorePlane(block, grey, off.points, p.plane, o);
+  if (away.n < o.min_samples) return {};
+  const double away_score = away.sum / away.n;
+  if (away_score >= o.min_score || score - away_score < o.off_line_min_drop) return {};
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "photometric score away from its lines %.2f < %.2f over %d samples (%.2f with "
+                "the samples on them)",
+                away_score, o.min_score, away.n, score);
+  return buf;
 }
 
 }  // namespace
@@ -443,7 +541,6 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       v.reason = buf;
       return;
     }
-    v.score = at.sum / at.n;
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : p.patch) c += q;
     c /= static_cast<double>(p.patch.size());
@@ -456,6 +553,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // z = -(a x + b y + d) / c: moving z by +h changes d by -c h.
     below[3] += p.plane[2] * v.offset_m;
     above[3] -= p.plane[2] * v.offset_m;
+    v.score = at.sum / at.n;
     const Scores lo = ScorePlane(block, grey, samples, below, o);
     const Scores hi = ScorePlane(block, grey, samples, above, o);
     v.score_below = lo.n ? lo.sum / lo.n : 0.0;
@@ -518,6 +616,9 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                     "same samples %+.3f, standard error %.3f)",
                     v.score, v.offset_m, v.score_tilted, v.tilt_difference, v.tilt_se);
       v.reason = buf;
+    } else if (o.verify_off_lines && !height_fails &&
+               !(v.reason = OffLineRefusal(block, grey, grid, p, v.score, o)).empty()) {
+      // v.reason says why.
     } else {
       v.accepted = true;
       v.height_confirmed = !height_fails;

@@ -105,7 +105,9 @@ TEST(VerifyPlanes, PatchIsCutBackToWhereTheImagesSeeThePlane) {
   EXPECT_NEAR(y_min, 0.5, 1e-6);  // the line's side stays
   EXPECT_LE(SignedArea(v[0].patch), 9.0 * (5.5 + reach));
   ASSERT_TRUE(v[1].accepted) << v[1].reason;
-  if (!v[1].patch.empty()) EXPECT_GT(SignedArea(v[1].patch), 0.97 * 9.0 * 5.0);
+  if (!v[1].patch.empty()) {
+    EXPECT_GT(SignedArea(v[1].patch), 0.97 * 9.0 * 5.0);
+  }
 
   VerifyOptions off;
   off.trim_patch = false;
@@ -114,6 +116,47 @@ TEST(VerifyPlanes, PatchIsCutBackToWhereTheImagesSeeThePlane) {
   const auto k = VerifyPlanes(block, sweep_test::RenderAll(scene, block), {past}, off, progress);
   ASSERT_EQ(k.size(), 1u);
   EXPECT_TRUE(k[0].patch.empty());
+}
+
+// The face's plane continues past its eave over 2 m of ground to a shed
+// whose roof lies on that extension (y 8-9.5): the shed's texture
+// supports the plane, the ground between refutes it. The cut keeps only
+// what connects to the plane's line; without that the shed's cells hold
+// the hull open over the ground.
+TEST(VerifyPlanes, TrimDropsSupportCutOffFromTheLines) {
+  const Quad face = Face(true);
+  const double t = std::tan(30 * M_PI / 180);
+  Quad shed;
+  shed.origin = {-4, 8, 6 - 2 * t};
+  shed.u = {8, 0, 0};
+  shed.v = {0, 1.5, -1.5 * t};
+  shed.seed = 7;
+  TestScene scene;
+  scene.quads = {face, shed};
+  RoofPlaneHypothesis past = Hypothesis(face);
+  past.patch = {{-4.5, 0.5}, {4.5, 0.5}, {4.5, 9.5}, {-4.5, 9.5}};
+  past.lines_xy = {{Eigen::Vector2d(-4.5, 0.5), Eigen::Vector2d(4.5, 0.5)}};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  NullProgress progress;
+  auto y_max = [](const PlaneVerification& v) {
+    double y = -1e9;
+    for (const auto& q : v.patch) y = std::max(y, q.y());
+    return y;
+  };
+  const auto v = VerifyPlanes(block, images, {past}, VerifyOptions(), progress);
+  ASSERT_EQ(v.size(), 1u);
+  ASSERT_TRUE(v[0].accepted) << v[0].reason;
+  ASSERT_GE(v[0].patch.size(), 3u);
+  EXPECT_LE(y_max(v[0]), 6.0 + VerifyOptions{}.trim_vote_radius_m + 0.125);
+
+  VerifyOptions unconnected;
+  unconnected.trim_connected = false;
+  const auto u = VerifyPlanes(block, images, {past}, unconnected, progress);
+  ASSERT_EQ(u.size(), 1u);
+  ASSERT_TRUE(u[0].accepted) << u[0].reason;
+  // An empty patch: nothing was cut.
+  EXPECT_TRUE(u[0].patch.empty() || y_max(u[0]) > 9.0) << y_max(u[0]);
 }
 
 // A dormer-sized patch (1.4 x 1.2 m in plan) holds fewer than min_samples
@@ -232,6 +275,46 @@ TEST(BestHorizontalHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
   const auto v = VerifyPlanes(block, images, {h}, VerifyOptions(), progress);
   ASSERT_EQ(v.size(), 1u);
   EXPECT_TRUE(v[0].accepted) << v[0].reason;
+}
+
+// Two flat roofs, a house at z = 6 up to y = 0 and a shed at z = 4 from
+// y = 1.2, with 1.2 m of ground between them. The plane through the
+// house's eave and the shed's edge is no roof: its windows on the two
+// lines correlate (the lines are real and at its height), those between
+// them see the ground metres below. Away from its lines it scores low and
+// far below its score with them, and is refused; scored over all samples
+// only, the lines carry it through every test.
+TEST(VerifyPlanes, PlaneSpanningTwoLinesOverTheGroundIsRefused) {
+  Quad house, shed;
+  house.origin = {-10, -6, 6};
+  house.u = {20, 0, 0};
+  house.v = {0, 6, 0};
+  house.seed = 3;
+  shed.origin = {-10, 1.2, 4};
+  shed.u = {20, 0, 0};
+  shed.v = {0, 4, 0};
+  shed.colour = {0.6f, 0.6f, 0.65f};
+  shed.seed = 4;
+  TestScene scene;
+  scene.quads = {house, shed};
+  // z = 6 at y = 0 falling to z = 4 at y = 1.2.
+  const Eigen::Vector3d n = Eigen::Vector3d(0, 2, 1.2).normalized();
+  RoofPlaneHypothesis span;
+  span.plane << n, -n.dot(Eigen::Vector3d(0, 0, 6));
+  span.patch = {{-9.5, 0}, {9.5, 0}, {9.5, 1.2}, {-9.5, 1.2}};
+  span.lines_xy = {{Eigen::Vector2d(-9.5, 0), Eigen::Vector2d(9.5, 0)},
+                   {Eigen::Vector2d(-9.5, 1.2), Eigen::Vector2d(9.5, 1.2)}};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  NullProgress progress;
+  const auto v = VerifyPlanes(block, images, {span}, VerifyOptions(), progress);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_FALSE(v[0].accepted) << "score " << v[0].score;
+  VerifyOptions all;
+  all.verify_off_lines = false;
+  const auto a = VerifyPlanes(block, images, {span}, all, progress);
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_TRUE(a[0].accepted) << a[0].reason;
 }
 
 }  // namespace
