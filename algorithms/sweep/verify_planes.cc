@@ -361,15 +361,15 @@ Ring2 TrimmedPatch(const Ring2& patch, const SampleGrid& g, const Scores& at,
   // line stay; without lines, all of them.
   std::vector<char> reached(vote.size(), lines.empty() || !o.trim_connected ? 1 : 0);
   std::vector<int> stack;
+  std::vector<double> dist(at_cell.size());
   for (const auto& l : lines) {
     double nearest = std::numeric_limits<double>::infinity();
-    for (int i : at_cell)
-      if (i >= 0)
-        nearest = std::min(nearest, PointSegmentDistance(g.points[i].head<2>(), l[0], l[1]));
     for (size_t c = 0; c < at_cell.size(); ++c)
-      if (at_cell[c] >= 0 && !reached[c] &&
-          PointSegmentDistance(g.points[at_cell[c]].head<2>(), l[0], l[1]) <=
-              nearest + 1.5 * g.spacing)
+      if (at_cell[c] >= 0)
+        nearest = std::min(
+            nearest, dist[c] = PointSegmentDistance(g.points[at_cell[c]].head<2>(), l[0], l[1]));
+    for (size_t c = 0; c < at_cell.size(); ++c)
+      if (at_cell[c] >= 0 && !reached[c] && dist[c] <= nearest + 1.5 * g.spacing)
         reached[c] = 1, stack.push_back(static_cast<int>(c));
   }
   while (!stack.empty()) {
@@ -440,16 +440,13 @@ SampleGrid OffLines(const SampleGrid& g, const std::vector<std::array<Eigen::Vec
 
 // Why the plane is refused on its samples away from its lines (see
 // VerifyOptions::verify_off_lines); empty when it is not, or when too few
-// samples lie away from them to tell. `score` is the plane's mean Cor+
-// over all its samples.
+// samples lie away from them to tell. `centre` is the patch centre on the
+// plane, `score` the plane's mean Cor+ over all its samples.
 std::string OffLineRefusal(const Block& block, const std::vector<cv::Mat>& grey,
-                           const SampleGrid& grid, const RoofPlaneHypothesis& p, double score,
-                           const VerifyOptions& o) {
-  if (p.lines_xy.empty() || p.patch.empty()) return {};
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (const auto& q : p.patch) c += q;
-  c /= static_cast<double>(p.patch.size());
-  const double ppm = PixelsPerMetre(block, {c.x(), c.y(), PlaneZ(p.plane, c.x(), c.y())});
+                           const SampleGrid& grid, const RoofPlaneHypothesis& p,
+                           const Eigen::Vector3d& centre, double score, const VerifyOptions& o) {
+  if (p.lines_xy.empty()) return {};
+  const double ppm = PixelsPerMetre(block, centre);
   if (!(ppm > 0)) return {};
   const SampleGrid off = OffLines(grid, p.lines_xy, o.off_line_band_px / ppm);
   if (static_cast<int>(off.points.size()) < o.min_samples) return {};
@@ -541,6 +538,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       v.reason = buf;
       return;
     }
+    v.score = at.sum / at.n;
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : p.patch) c += q;
     c /= static_cast<double>(p.patch.size());
@@ -553,7 +551,6 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // z = -(a x + b y + d) / c: moving z by +h changes d by -c h.
     below[3] += p.plane[2] * v.offset_m;
     above[3] -= p.plane[2] * v.offset_m;
-    v.score = at.sum / at.n;
     const Scores lo = ScorePlane(block, grey, samples, below, o);
     const Scores hi = ScorePlane(block, grey, samples, above, o);
     v.score_below = lo.n ? lo.sum / lo.n : 0.0;
@@ -616,10 +613,10 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                     "same samples %+.3f, standard error %.3f)",
                     v.score, v.offset_m, v.score_tilted, v.tilt_difference, v.tilt_se);
       v.reason = buf;
-    } else if (o.verify_off_lines && !height_fails &&
-               !(v.reason = OffLineRefusal(block, grey, grid, p, v.score, o)).empty()) {
-      // v.reason says why.
-    } else {
+    } else if (o.verify_off_lines && !height_fails) {
+      v.reason = OffLineRefusal(block, grey, grid, p, {c.x(), c.y(), zc}, v.score, o);
+    }
+    if (v.reason.empty()) {
       v.accepted = true;
       v.height_confirmed = !height_fails;
       if (o.trim_patch) v.patch = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
