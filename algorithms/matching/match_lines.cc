@@ -133,14 +133,23 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     labels.resize(nv);
     tbb::parallel_for(0, nv,
                       [&](int v) { labels[v] = TruthLabels(views[v], *truth, o.min_length); });
+    res.truth_edges.assign(truth->size(), TruthEdgeReach{});
+    for (int v = 0; v < nv; ++v) {
+      std::vector<char> seen(truth->size(), 0);
+      for (const std::vector<int>& ls : labels[v])
+        for (int e : ls) seen[e] = 1;
+      for (size_t e = 0; e < truth->size(); ++e) res.truth_edges[e].views += seen[e];
+    }
     res.funnel.true_all = res.funnel.true_geometric = res.funnel.true_chromatic =
         res.funnel.true_correlation = res.funnel.true_verified = res.funnel.true_unambiguous =
             res.funnel.true_assigned = 0;
   }
 
-  std::vector<char> edges_all, edges_verified, edges_unambiguous, edges_assigned;
+  std::vector<char> edges_all, edges_geometric, edges_chromatic, edges_correlation, edges_verified,
+      edges_unambiguous, edges_assigned;
   if (truth) {
-    for (auto* m : {&edges_all, &edges_verified, &edges_unambiguous, &edges_assigned})
+    for (auto* m : {&edges_all, &edges_geometric, &edges_chromatic, &edges_correlation,
+                    &edges_verified, &edges_unambiguous, &edges_assigned})
       m->assign(truth->size(), 0);
   }
   auto mark = [&](const PairHypothesis& h, std::vector<char>* m) {
@@ -242,19 +251,29 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
 
     std::vector<std::array<long long, 3>> counts(ns, {0, 0, 0});
     std::vector<std::array<long long, 3>> tcounts(ns, {0, 0, 0});
+    // With truth, each true pair's partner and the last stage it passed
+    // (0 geometric, 1 chromatic, 2 correlation), marked on the edges after
+    // the parallel loop.
+    std::vector<std::vector<std::pair<int, int>>> reached(ns);
     tbb::parallel_for(0, ns, [&](int s) {
       std::vector<PairHypothesis> kept;
       for (PairHypothesis& h : cand[s]) {
         const bool is_true = truth && Shares(labels[i][s], labels[j][h.sj]);
         h.true_pair = truth ? (is_true ? 1 : 0) : -1;
-        if (is_true) ++tcounts[s][0];
+        if (is_true) {
+          ++tcounts[s][0];
+          reached[s].emplace_back(h.sj, 0);
+        }
         for (int side = 0; side < 2; ++side)
           if (SidesCompatible(views[i].sides[s][side], views[j].sides[h.sj][side_j(h, side)], thr,
                               o.max_test_pixels))
             h.sides |= 1 << side;
         if (h.sides == 0) continue;
         ++counts[s][1];
-        if (is_true) ++tcounts[s][1];
+        if (is_true) {
+          ++tcounts[s][1];
+          reached[s].back().second = 1;
+        }
         double best = -9;
         for (int side = 0; side < 2; ++side) {
           if (!(h.sides & (1 << side))) continue;
@@ -264,7 +283,10 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
         if (!(best > o.min_correlation)) continue;
         h.score = best;
         ++counts[s][2];
-        if (is_true) ++tcounts[s][2];
+        if (is_true) {
+          ++tcounts[s][2];
+          reached[s].back().second = 2;
+        }
         kept.push_back(h);
       }
       cand[s] = std::move(kept);
@@ -276,10 +298,31 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
         res.funnel.true_geometric += tcounts[s][0];
         res.funnel.true_chromatic += tcounts[s][1];
         res.funnel.true_correlation += tcounts[s][2];
+        for (const auto& [sj, stage] : reached[s]) {
+          MarkShared(labels[i][s], labels[j][sj], &edges_geometric);
+          if (stage >= 1) MarkShared(labels[i][s], labels[j][sj], &edges_chromatic);
+          if (stage >= 2) MarkShared(labels[i][s], labels[j][sj], &edges_correlation);
+        }
       }
       for (PairHypothesis& h : cand[s]) hyps.push_back({h, {}});
     }
     if (truth) {
+      // Which edges both views hold, and whether a segment of view i on
+      // one meets the epipolar lines steeply enough to be tried.
+      std::vector<char> in_j(truth->size(), 0), in_both(truth->size(), 0), tried(truth->size(), 0);
+      for (const std::vector<int>& ls : labels[j])
+        for (int e : ls) in_j[e] = 1;
+      for (int s = 0; s < ns; ++s)
+        for (int e : labels[i][s])
+          if (in_j[e]) {
+            in_both[e] = 1;
+            tried[e] = tried[e] || !skipped[s];
+          }
+      for (size_t e = 0; e < truth->size(); ++e)
+        if (in_both[e]) {
+          ++res.truth_edges[e].view_pairs;
+          res.truth_edges[e].along_epipolar += !tried[e];
+        }
       MatchOptions loose = o;
       loose.max_angle_deviation = 90;
       for (int s = 0; s < ns; ++s) {
@@ -389,6 +432,15 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     }
   if (truth) {
     res.funnel.true_edges_all_m = MarkedLength(edges_all, *truth);
+    const std::vector<char>* stages[] = {&edges_all,         &edges_geometric, &edges_chromatic,
+                                         &edges_correlation, &edges_verified,  &edges_unambiguous,
+                                         &edges_assigned};
+    for (size_t e = 0; e < truth->size(); ++e)
+      for (int k = 0; k < 7; ++k)
+        if ((*stages[k])[e]) res.truth_edges[e].stage = k + 1;
+    res.funnel.true_edges_geometric_m = MarkedLength(edges_geometric, *truth);
+    res.funnel.true_edges_chromatic_m = MarkedLength(edges_chromatic, *truth);
+    res.funnel.true_edges_correlation_m = MarkedLength(edges_correlation, *truth);
     res.funnel.true_edges_verified_m = MarkedLength(edges_verified, *truth);
     res.funnel.true_edges_unambiguous_m = MarkedLength(edges_unambiguous, *truth);
     res.funnel.true_edges_assigned_m = MarkedLength(edges_assigned, *truth);
@@ -579,9 +631,9 @@ std::string FormatFunnel(const MatchFunnel& f) {
     }
   };
   if (t) row("eligible true pairs", -1, f.true_all, f.true_edges_all_m);
-  row("geometric", f.geometric, f.true_geometric);
-  row("chromatic (integrated)", f.chromatic, f.true_chromatic);
-  row("chromatic correlation", f.correlation, f.true_correlation);
+  row("geometric", f.geometric, f.true_geometric, f.true_edges_geometric_m);
+  row("chromatic (integrated)", f.chromatic, f.true_chromatic, f.true_edges_chromatic_m);
+  row("chromatic correlation", f.correlation, f.true_correlation, f.true_edges_correlation_m);
   row("verified in other views", f.verified, f.true_verified, f.true_edges_verified_m);
   row("unambiguous", f.unambiguous, f.true_unambiguous, f.true_edges_unambiguous_m);
   row("one-to-one (final)", f.assigned, f.true_assigned, f.true_edges_assigned_m);

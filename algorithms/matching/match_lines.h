@@ -64,7 +64,8 @@ struct MatchFunnel {
   // at least one true pair of the stage lies on (several view pairs, and
   // fragments, give one edge several true pairs; the one-to-one step keeps
   // one of them by design, so the pairs fall faster than the edges).
-  double true_edges_all_m = -1, true_edges_verified_m = -1, true_edges_unambiguous_m = -1,
+  double true_edges_all_m = -1, true_edges_geometric_m = -1, true_edges_chromatic_m = -1,
+         true_edges_correlation_m = -1, true_edges_verified_m = -1, true_edges_unambiguous_m = -1,
          true_edges_assigned_m = -1;
 };
 
@@ -73,10 +74,27 @@ struct MatchTimings {
          triangulate_s = 0;
 };
 
+// With ground truth: how far each true edge got. Its views hold a matched
+// segment (after the texture filter) within 1.5 px and 3 deg of its
+// projection.
+struct TruthEdgeReach {
+  int views = 0;       // views holding a segment on it
+  int view_pairs = 0;  // pairs of overlapping views that both hold one
+  // Of those pairs, the ones where each of the first view's segments on it
+  // lies within min_epipolar_angle of the epipolar lines: no pair can fix
+  // its depth (an edge along the flight line seen from one strip only).
+  int along_epipolar = 0;
+  // The furthest stage a true pair on it reached: 0 none, 1 eligible,
+  // 2 geometric, 3 chromatic, 4 chromatic correlation, 5 verified in other
+  // views, 6 unambiguous, 7 one-to-one.
+  int stage = 0;
+};
+
 struct MatchResult {
   std::vector<Segments2D> segments;  // per view, as matched (MatchOptions::match_texture)
   std::vector<Line3D> lines;
   MatchFunnel funnel;
+  std::vector<TruthEdgeReach> truth_edges;  // with truth, one per true edge
   MatchTimings timings;
   std::vector<std::string> messages;  // why a result is empty or partial
 };

@@ -56,10 +56,35 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
     EXPECT_GE(f.unambiguous, f.assigned);
     // Per true edge: each stage keeps a subset of the previous one's edges,
     // and the final pairs lie on some.
+    EXPECT_GE(f.true_edges_all_m, f.true_edges_geometric_m);
+    EXPECT_GE(f.true_edges_geometric_m, f.true_edges_chromatic_m);
+    EXPECT_GE(f.true_edges_chromatic_m, f.true_edges_correlation_m);
+    EXPECT_GE(f.true_edges_correlation_m, f.true_edges_verified_m);
     EXPECT_GE(f.true_edges_all_m, f.true_edges_verified_m);
     EXPECT_GE(f.true_edges_verified_m, f.true_edges_unambiguous_m);
     EXPECT_GE(f.true_edges_unambiguous_m, f.true_edges_assigned_m);
     if (f.true_assigned > 0) EXPECT_GT(f.true_edges_assigned_m, 0);
+    // Per true edge, the furthest stage agrees with the funnel's lengths; an
+    // edge that every pair holding it sees along its epipolar lines, or that
+    // fewer than two views hold, is never a candidate.
+    ASSERT_EQ(r.truth_edges.size(), b.truth.size());
+    double eligible_m = 0, verified_m = 0;
+    int out_of_reach = 0;
+    for (size_t e = 0; e < b.truth.size(); ++e) {
+      const TruthEdgeReach& t = r.truth_edges[e];
+      EXPECT_GE(t.view_pairs, t.along_epipolar);
+      EXPECT_LE(t.view_pairs, t.views * (t.views - 1) / 2);
+      if (t.stage >= 1) eligible_m += b.truth[e].Length();
+      if (t.stage >= 5) verified_m += b.truth[e].Length();
+      if (t.views < 2 || t.along_epipolar == t.view_pairs) {
+        EXPECT_EQ(t.stage, 0) << "edge " << e;
+        out_of_reach += t.views >= 2;
+      }
+    }
+    EXPECT_NEAR(eligible_m, f.true_edges_all_m, 1e-6);
+    EXPECT_NEAR(verified_m, f.true_edges_verified_m, 1e-6);
+    std::printf("seed %d: %d edges held by two views or more only along epipolar lines\n",
+                static_cast<int>(seed), out_of_reach);
     // One-to-one: no (view, segment) in two lines before merging.
     std::set<std::pair<int, int>> used;
     size_t obs = 0;

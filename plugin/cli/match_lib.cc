@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -128,6 +129,18 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
     if (s.reference_length_m > 0) out.completeness = s.reference_covered_m / s.reference_length_m;
     if (s.roof_edge_length_m > 0)
       out.roof_edge_completeness = s.roof_edge_covered_m / s.roof_edge_length_m;
+    const std::vector<TruthEdgeReach>& reach = out.result.truth_edges;
+    for (size_t k = 0; k < truth.segments.size() && k < reach.size(); ++k) {
+      if (!IsRoofKind(truth.segments[k].kind)) continue;
+      const double len = truth_local[k].Length();
+      out.roof_edge_m += len;
+      if (reach[k].stage >= 1)
+        out.roof_reachable_m += len;
+      else if (reach[k].views < 2)
+        out.roof_one_view_m += len;
+      else if (reach[k].view_pairs > 0 && reach[k].along_epipolar == reach[k].view_pairs)
+        out.roof_along_epipolar_m += len;
+    }
   }
 
   t0 = std::chrono::steady_clock::now();
@@ -173,6 +186,18 @@ std::string FormatMatchSummary(const MatchSummary& s) {
                   "Against the truth (10 cm, 10 deg, length-based): precision %.1f%%, "
                   "completeness %.1f%%, roof-edge completeness %.1f%%\n",
                   pct(s.precision), pct(s.completeness), pct(s.roof_edge_completeness));
+    o << buf;
+  }
+  if (s.roof_edge_m > 0) {
+    const double other = std::max(
+        0.0, s.roof_edge_m - s.roof_reachable_m - s.roof_along_epipolar_m - s.roof_one_view_m);
+    std::snprintf(buf, sizeof buf,
+                  "Roof edges within reach of a true pair: %.1f%% of %.0f m; out of reach: %.1f%% "
+                  "along the epipolar lines of every pair that sees them, %.1f%% detected in fewer "
+                  "than two views, %.1f%% other\n",
+                  100 * s.roof_reachable_m / s.roof_edge_m, s.roof_edge_m,
+                  100 * s.roof_along_epipolar_m / s.roof_edge_m,
+                  100 * s.roof_one_view_m / s.roof_edge_m, 100 * other / s.roof_edge_m);
     o << buf;
   }
   if (s.annotated) {

@@ -34,6 +34,12 @@ struct MatchSummary {
   double read_s = 0, write_s = 0;
   // With truth: length-based scores within 10 cm / 10 degrees.
   std::optional<double> precision, completeness, roof_edge_completeness;
+  // Roof-edge length by how far matching could reach it (metres): a true
+  // pair of segments was a candidate (the ceiling of roof-edge
+  // completeness), only along the epipolar lines of every pair that holds
+  // it, held by segments of fewer than two views, or none of these
+  // (fragments too short to overlap, or cut by the scene's height range).
+  double roof_edge_m = 0, roof_reachable_m = 0, roof_along_epipolar_m = 0, roof_one_view_m = 0;
   // With a VGG set as truth.
   std::optional<eval::MatchScores> annotated;
 };

@@ -229,6 +229,28 @@ assert [x for x in rows if x[1] and "roof edges on image edges" in x[1]], rows
     || fail run_min_edge_support_drops "buildings kept or no reason"
 }
 
+# match -truth says how much roof edge a true pair could reach at all. One
+# strip: its edges along the flight line lie along every pair's epipolar
+# lines, so part of the roof edge is out of reach.
+test_match_truth_reach() {
+  small_block || return
+  expect_ok match_truth match "$SIM" -o "$WORK/m.gpkg" -truth "$SIM/groundtruth_edges.json" || return
+  python3 - "$WORK/stdout.txt" <<'PY' && pass match_truth_reach || fail match_truth_reach "$(grep -i 'roof edges' "$WORK/stdout.txt")"
+import re, sys
+text = open(sys.argv[1]).read()
+m = re.search(r"Roof edges within reach of a true pair: ([\d.]+)% of (\d+) m; out of reach: ([\d.]+)% "
+              r"along the epipolar lines of every pair that sees them, ([\d.]+)% detected in fewer "
+              r"than two views, ([\d.]+)% other", text)
+assert m, text
+reach, total, along, one, other = (float(x) for x in m.groups())
+assert total > 0 and abs(reach + along + one + other - 100) < 0.3, m.groups()
+assert along > 0, m.groups()
+done = float(re.search(r"roof-edge completeness ([\d.]+)%", text).group(1))
+# Lines outside the candidates' reach come only from junction completion.
+assert done < reach + along + 1, (done, m.groups())
+PY
+}
+
 test_run_refuses_bad_input() {
   small_block || return
   touch "$WORK/exists.gml"
