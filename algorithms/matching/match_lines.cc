@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <random>
@@ -436,8 +437,8 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
                                          &edges_correlation, &edges_verified,  &edges_unambiguous,
                                          &edges_assigned};
     for (size_t e = 0; e < truth->size(); ++e)
-      for (int k = 0; k < 7; ++k)
-        if ((*stages[k])[e]) res.truth_edges[e].stage = k + 1;
+      for (size_t k = 0; k < std::size(stages); ++k)
+        if ((*stages[k])[e]) res.truth_edges[e].stage = static_cast<int>(k) + 1;
     res.funnel.true_edges_geometric_m = MarkedLength(edges_geometric, *truth);
     res.funnel.true_edges_chromatic_m = MarkedLength(edges_chromatic, *truth);
     res.funnel.true_edges_correlation_m = MarkedLength(edges_correlation, *truth);
