@@ -135,6 +135,24 @@ bool InConflict(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
   return true;
 }
 
+// True when a supporting line of q runs inside p's patch at least step_m
+// above or below p's plane (both heights from the planes: a line lies
+// within the grouping's tolerance of its own plane). Sampled at its ends,
+// quarters and middle, as a hip rises from a border to the ridge.
+bool LineOffPlane(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis& p, double step_m) {
+  auto height = [](const Eigen::Vector4d& e, const Eigen::Vector2d& x) {
+    return -(e[0] * x.x() + e[1] * x.y() + e[3]) / e[2];
+  };
+  if (!(std::abs(p.plane[2]) > 1e-6 && std::abs(q.plane[2]) > 1e-6)) return false;
+  for (const auto& l : q.lines_xy)
+    for (int i = 0; i <= 4; ++i) {
+      const Eigen::Vector2d x = l[0] + 0.25 * i * (l[1] - l[0]);
+      if (InsideConvex(p.patch, x) && std::abs(height(q.plane, x) - height(p.plane, x)) >= step_m)
+        return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& o) {
@@ -284,24 +302,34 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       if (!in[big]) continue;
       std::vector<int> chosen;
       double sum = 0;
-      for (int q : by_score) {
-        // Faces, not fragments: small planes of one short line fit a few
-        // samples well, and together outweighed a flat roof (realistic
-        // s17); later stages drop them.
-        if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) ||
-            !(p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain) ||
-            p[q].lines < o.min_lines || p[q].longest_line_m < o.conflict_replace_min_line_m)
-          continue;
-        double f = 0;
-        if (!conflict(q, big, &f)) continue;
-        auto clashes = [&](int j) { return j != big && j != q && conflict(q, j, &f); };
-        bool free = true;
-        for (int j = 0; j < n && free; ++j) free = !(in[j] && clashes(j));
-        for (size_t c = 0; c < chosen.size() && free; ++c) free = !clashes(chosen[c]);
-        if (!free) continue;
-        chosen.push_back(q);
-        sum += p[q].score;
-      }
+      int by_line = 0;
+      // The faces that fit the images clearly better are chosen first;
+      // those with a line off the kept plane fill in where they do not
+      // clash with them.
+      for (int pass = 0; pass < 2; ++pass)
+        for (int q : by_score) {
+          // Faces, not fragments: small planes of one short line fit a few
+          // samples well, and together outweighed a flat roof (realistic
+          // s17); later stages drop them.
+          if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) || p[q].lines < o.min_lines ||
+              p[q].longest_line_m < o.conflict_replace_min_line_m)
+            continue;
+          const bool better = p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain;
+          if (pass == 0 ? !better
+                        : better || !(o.conflict_replace_min_step_m > 0 &&
+                                      LineOffPlane(p[q], p[big], o.conflict_replace_min_step_m)))
+            continue;
+          double f = 0;
+          if (!conflict(q, big, &f)) continue;
+          auto clashes = [&](int j) { return j != big && j != q && conflict(q, j, &f); };
+          bool free = true;
+          for (int j = 0; j < n && free; ++j) free = !(in[j] && clashes(j));
+          for (size_t c = 0; c < chosen.size() && free; ++c) free = !clashes(chosen[c]);
+          if (!free) continue;
+          chosen.push_back(q);
+          sum += p[q].score;
+          by_line += pass;
+        }
       if (chosen.size() < 2 || !(sum > p[big].score)) continue;
       std::string names;
       for (int q : chosen) {
@@ -311,9 +339,10 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       }
       in[big] = 0;
       reason[big] = StrFormat(
-          "%s: overlaps %zu planes that each fit the images better and together hold more "
+          "%s: overlaps %zu planes that each fit the images better%s and together hold more "
           "evidence (%.1f against %.1f): %s",
-          p[big].id.c_str(), chosen.size(), sum, p[big].score, names.c_str());
+          p[big].id.c_str(), chosen.size(), by_line > 0 ? " or hold a line off it," : "", sum,
+          p[big].score, names.c_str());
       changed = true;
     }
   }

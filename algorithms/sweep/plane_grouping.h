@@ -56,6 +56,11 @@ struct GroupingOptions {
   // AssemblyOptions::min_line_length_m).
   bool conflict_replace_by_several = true;
   double conflict_replace_min_gain = 0.1;
+  // ... or, instead of the gain, one of its supporting lines runs inside
+  // the kept plane's patch at least conflict_replace_min_step_m above or
+  // below the kept plane: that plane cannot be the roof there. 0 turns
+  // this off.
+  double conflict_replace_min_step_m = 0.4;
   double conflict_replace_min_line_m = 3.0;
   // §5: "at least two lines (one of them can be virtual) are required to
   // accept a plane", an efficient culling of erroneous one-line half-planes
@@ -107,7 +112,9 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 // is dropped, unless the two meet along a line that parts their patches
 // (conflict_meet_max_across); then a kept plane that several of the
 // dropped ones explain better together is replaced by them
-// (conflict_replace_by_several). Returns the reasons.
+// (conflict_replace_by_several; better: a clearly higher similarity, or a
+// line of theirs the kept plane passes far above or below). Returns the
+// reasons.
 std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* planes,
                                           const GroupingOptions& options);
 

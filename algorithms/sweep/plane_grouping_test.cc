@@ -252,6 +252,71 @@ TEST(PlaneGrouping, TheTwoFacesOfAGableMeetAtTheRidgeInsteadOfConflicting) {
   EXPECT_EQ(planes[0].id, "south");
 }
 
+TEST(PlaneGrouping, AFlatPlaneUnderARidgeLineGivesWayToTheFacesThatHoldIt) {
+  // The top of a mansard roof: two faces of 10 deg rise from the break
+  // lines (x = 0 and x = 5, z = 10) to a ridge 0.44 m higher. The flat
+  // plane through the break lines covers both faces and beats each by its
+  // area; the faces fit the images better, but by less than the 0.1 gain.
+  const double t = std::tan(10 * M_PI / 180);
+  const Eigen::Vector3d west_n = Eigen::Vector3d(-t, 0, 1).normalized();
+  const Eigen::Vector3d east_n = Eigen::Vector3d(t, 0, 1).normalized();
+  const Eigen::Vector3d ridge(2.5, 0, 10 + 2.5 * t);
+  auto face = [](RoofPlaneHypothesis h, double sim) {
+    h.similarity = sim;
+    h.score *= sim;
+    h.lines = 3;
+    h.longest_line_m = 10;
+    return h;
+  };
+  const std::array<Eigen::Vector2d, 2> ridge_xy = {Eigen::Vector2d(2.5, 3),
+                                                   Eigen::Vector2d(2.5, 7)};
+  RoofPlaneHypothesis flat = face(Face("flat", {0, 0, 1}, {0, 0, 10}, 0, 0, 5, 10, 50), 0.84);
+  flat.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 10)},
+                   {Eigen::Vector2d(5, 0), Eigen::Vector2d(5, 10)}};
+  RoofPlaneHypothesis west = face(Face("west", west_n, ridge, 0, 0, 2.5, 10, 25), 0.90);
+  west.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 10)}, ridge_xy};
+  RoofPlaneHypothesis east = face(Face("east", east_n, ridge, 2.5, 0, 5, 10, 25), 0.88);
+  east.lines_xy = {{Eigen::Vector2d(5, 0), Eigen::Vector2d(5, 10)}, ridge_xy};
+
+  std::vector<RoofPlaneHypothesis> planes = {flat, west, east};
+  std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "west");
+  EXPECT_EQ(planes[1].id, "east");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind(
+                "flat: overlaps 2 planes that each fit the images better or hold a line off it", 0),
+            0u)
+      << rejected[0];
+
+  // Without the ridge line the faces are only a little better: the flat
+  // plane stays, as it does with the rule off.
+  GroupingOptions off;
+  off.conflict_replace_min_step_m = 0;
+  planes = {flat, west, east};
+  ASSERT_EQ(ResolveConflicts(&planes, off).size(), 2u);
+  EXPECT_EQ(planes[0].id, "flat");
+  RoofPlaneHypothesis west_eave = west, east_eave = east;
+  west_eave.lines_xy.pop_back();
+  east_eave.lines_xy.pop_back();
+  planes = {flat, west_eave, east_eave};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  EXPECT_EQ(planes[0].id, "flat");
+
+  // A ridge line less than 0.4 m above the flat plane (7 deg faces) is
+  // within what the grouping lets a line stray from its plane.
+  const double t7 = std::tan(7 * M_PI / 180);
+  const Eigen::Vector3d low_ridge(2.5, 0, 10 + 2.5 * t7);
+  RoofPlaneHypothesis west7 = west, east7 = east;
+  west7.plane << Eigen::Vector3d(-t7, 0, 1).normalized(), 0;
+  west7.plane[3] = -west7.plane.head<3>().dot(low_ridge);
+  east7.plane << Eigen::Vector3d(t7, 0, 1).normalized(), 0;
+  east7.plane[3] = -east7.plane.head<3>().dot(low_ridge);
+  planes = {flat, west7, east7};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  EXPECT_EQ(planes[0].id, "flat");
+}
+
 TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   // Two terraced houses, 7 and 8 m wide, whose north faces (36.9 deg) have
   // ridges 1.2 m apart in height; one plane carried over both beats each
