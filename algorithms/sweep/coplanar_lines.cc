@@ -191,6 +191,16 @@ int SideToward(const Segment3& i, const Segment3& j) {
   return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
 }
 
+// Per line, its half-planes on its sides -1 and +1 (null when not swept).
+std::vector<std::array<const HalfPlane*, 2>> SidesOf(const std::vector<SweepLine>& lines,
+                                                     const std::vector<HalfPlane>& half_planes) {
+  std::vector<std::array<const HalfPlane*, 2>> sides(lines.size(), {nullptr, nullptr});
+  for (const HalfPlane& h : half_planes)
+    if (h.line >= 0 && h.line < static_cast<int>(lines.size()) && (h.side == 1 || h.side == -1))
+      sides[h.line][h.side > 0 ? 1 : 0] = &h;
+  return sides;
+}
+
 // See CoplanarOptions::refuse_past_bounding_line. `sides[l]`: the
 // half-planes of line l on its sides -1 and +1 (null when not swept).
 bool RunsPastBoundingLine(const std::vector<SweepLine>& lines,
@@ -234,9 +244,29 @@ bool Compatible(const std::vector<SweepLine>& lines, const PlaneGroup& g, const 
 }  // namespace
 
 int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGroup>* planes,
-                        const CoplanarOptions& o) {
+                        const CoplanarOptions& o, const std::vector<HalfPlane>* half_planes) {
+  std::vector<std::array<const HalfPlane*, 2>> sides;
+  if (half_planes && o.refuse_other_face) sides = SidesOf(lines, *half_planes);
+  const double cos_max = std::cos(o.continuation_angle_deg * kDeg);
   int attached = 0;
   for (PlaneGroup& g : *planes) {
+    const auto coplanar = [&](const HalfPlane* h) {
+      return h && h->candidate && std::abs(h->plane.head<3>().dot(g.plane.head<3>())) >= cos_max;
+    };
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& p : g.patch) centre += p;
+    if (!g.patch.empty()) centre /= static_cast<double>(g.patch.size());
+    // The images see another face on the plane's side of line l.
+    const auto bounds_other_face = [&](int l) {
+      if (sides.empty()) return false;
+      const Segment3& s = lines[l].segment;
+      const Eigen::Vector2d d = (s.b - s.a).head<2>(), m = centre - s.a.head<2>();
+      const double cross = d.x() * m.y() - d.y() * m.x();
+      if (cross == 0) return false;
+      const HalfPlane* facing = sides[l][cross > 0 ? 1 : 0];
+      const HalfPlane* away = sides[l][cross > 0 ? 0 : 1];
+      return facing && facing->candidate && !coplanar(facing) && !coplanar(away);
+    };
     // Longest lines first: they fix the plane best, and the order makes the
     // result independent of the input order of equally long lines.
     std::vector<int> order;
@@ -246,6 +276,7 @@ int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGr
       if (std::find(g.lines.begin(), g.lines.end(), static_cast<int>(l)) != g.lines.end()) continue;
       if (!OnPlane(g.plane, s, o.max_distance_m)) continue;
       if (ConvexDistance(g.patch, PlanSegment(s)) > o.max_gap_m) continue;
+      if (bounds_other_face(static_cast<int>(l))) continue;
       order.push_back(static_cast<int>(l));
     }
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
@@ -261,12 +292,7 @@ std::vector<PlaneGroup> PlanesFromLinePairs(const std::vector<SweepLine>& lines,
                                             const CoplanarOptions& o,
                                             const std::vector<HalfPlane>* half_planes) {
   std::vector<std::array<const HalfPlane*, 2>> sides;
-  if (half_planes && o.refuse_past_bounding_line) {
-    sides.assign(lines.size(), {nullptr, nullptr});
-    for (const HalfPlane& h : *half_planes)
-      if (h.line >= 0 && h.line < static_cast<int>(lines.size()) && (h.side == 1 || h.side == -1))
-        sides[h.line][h.side > 0 ? 1 : 0] = &h;
-  }
+  if (half_planes && o.refuse_past_bounding_line) sides = SidesOf(lines, *half_planes);
   std::vector<int> usable;
   for (size_t l = 0; l < lines.size(); ++l)
     if (lines[l].segment.Length() >= o.min_line_length_m) usable.push_back(static_cast<int>(l));

@@ -62,15 +62,26 @@ struct CoplanarOptions {
   // half-planes (PlanesFromLinePairs' `half_planes`).
   bool refuse_past_bounding_line = true;
   double continuation_angle_deg = 10.0;
+  // AttachCoplanarLines leaves out a line whose half-plane on the plane's
+  // side (where its patch's centre lies) is a sweep candidate more than
+  // continuation_angle_deg off the plane while neither of its half-planes
+  // lies within it: the images see another face beside that line. A
+  // terraced row's flat roofs at the eave height of the gabled houses
+  // beside them have their edge collinear with the eave, on the gable
+  // face's plane; attached, it grew that face's patch over the flat roofs
+  // (`realistic` s2). Needs the half-planes.
+  bool refuse_other_face = true;
 };
 
 // Adds to `planes` every line that is coplanar with a plane and within
 // max_gap_m of its patch; refits the plane by orthogonal regression over
 // its lines (the previous plane as a weak prior at its patch corners) and
 // grows the patch by the line. Lines in `planes` index `lines`. Returns the
-// number of lines attached. Deterministic.
+// number of lines attached. Deterministic. With `half_planes` (the sweep's),
+// a line that bounds another face is left out (refuse_other_face).
 int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGroup>* planes,
-                        const CoplanarOptions& options = {});
+                        const CoplanarOptions& options = {},
+                        const std::vector<HalfPlane>* half_planes = nullptr);
 
 // Plane hypotheses from pairs of neighbouring coplanar lines (see
 // CoplanarOptions). One that is coplanar with another or with one of

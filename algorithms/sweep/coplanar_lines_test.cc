@@ -170,6 +170,53 @@ TEST(CoplanarLines, SweptPlaneTakesItsCoplanarLinesAndKeepsOthersOut) {
   EXPECT_GT(AngleDeg(pairs[0].plane, n), 10.0);
 }
 
+TEST(CoplanarLines, ALineThatBoundsAnotherFaceIsNotAttached) {
+  // A terraced row: the gable's south eave (y = 0, z = 6, x 0..10) runs on
+  // as the edge of a flat roof at eave height (x -8..0), which lies on the
+  // same side of it as the gable's south face. The edge lies on the face's
+  // plane.
+  std::vector<SweepLine> lines = Gable();
+  lines.push_back(L({-8, 0, 6}, {0, 0, 6}));
+  const int flat_edge = static_cast<int>(lines.size()) - 1;
+  PlaneGroup g;
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -2, 4).normalized();
+  g.plane << n, -n.dot(Eigen::Vector3d(0, 4, 8));
+  g.lines = {0, 1, 3, 5};
+  g.patch = ConvexHull({{0, 4}, {10, 4}, {10, 0}, {0, 0}});
+  g.longest_line_m = 10;
+  // The sweep saw the flat roof on the face's side of the edge (+1 is
+  // left of a -> b: north, where the face's centre lies) and nothing
+  // beyond it.
+  HalfPlane flat;
+  flat.line = flat_edge;
+  flat.side = 1;
+  flat.plane << 0, 0, 1, -6;
+  flat.candidate = flat.accepted = true;
+  std::vector<HalfPlane> sides = {flat};
+
+  // Without the half-planes the edge joins the face and grows its patch
+  // over the flat roof.
+  std::vector<PlaneGroup> planes = {g};
+  EXPECT_EQ(AttachCoplanarLines(lines, &planes), 1);
+  EXPECT_NEAR(std::abs(SignedArea(planes[0].patch)), 40.0 + 16.0, 1e-6);
+
+  planes = {g};
+  EXPECT_EQ(AttachCoplanarLines(lines, &planes, CoplanarOptions{}, &sides), 0);
+  EXPECT_NEAR(std::abs(SignedArea(planes[0].patch)), 40.0, 1e-6);
+
+  // Where the sweep saw the face's own plane beside the edge (a terraced
+  // neighbour's coplanar face), the edge joins; so it does with the rule
+  // off.
+  sides[0].plane = g.plane;
+  planes = {g};
+  EXPECT_EQ(AttachCoplanarLines(lines, &planes, CoplanarOptions{}, &sides), 1);
+  sides[0].plane << 0, 0, 1, -6;
+  CoplanarOptions off;
+  off.refuse_other_face = false;
+  planes = {g};
+  EXPECT_EQ(AttachCoplanarLines(lines, &planes, off, &sides), 1);
+}
+
 TEST(CoplanarLines, NonCoplanarJunctionsAndSteepPlanesAreRefused) {
   // A wall corner (vertical) meeting an eave: the plane is a wall.
   const std::vector<SweepLine> wall = {L({0, 0, 0}, {0, 0, 6}), L({0, 0, 6}, {10, 0, 6})};

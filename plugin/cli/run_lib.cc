@@ -440,7 +440,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     pair_planes = static_cast<int>(pairs.size());
     for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
   }
-  attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar);
+  attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar, &hps);
   const std::vector<std::string> one_line = DropWeaklySupported(&grouped.planes, r.grouping);
   out.rejected.insert(out.rejected.end(), one_line.begin(), one_line.end());
   out.planes = static_cast<int>(grouped.planes.size());
