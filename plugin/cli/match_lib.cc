@@ -145,20 +145,8 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
 
   t0 = std::chrono::steady_clock::now();
   std::vector<LayerFeature> features;
-  for (const Line3D& l : out.result.lines) {
-    LayerFeature f;
-    f.lines.push_back({output_xyz(l.segment.a), output_xyz(l.segment.b)});
-    f.integers["views"] = l.Views();
-    f.reals["rms_px"] = l.rms_px;
-    f.reals["length_m"] = l.segment.Length();
-    f.strings["depth_from"] = DepthFrom(l);
-    f.strings["colour_left"] = Hex(l.colour_left);
-    f.strings["colour_right"] = Hex(l.colour_right);
-    std::vector<std::pair<std::string, int>> observations;
-    for (const auto& [v, s] : l.observations) observations.emplace_back(block.views[v].name, s);
-    f.strings["observations"] = FormatObservations(observations);
-    features.push_back(std::move(f));
-  }
+  for (const Line3D& l : out.result.lines)
+    features.push_back(Line3DFeature(l, block, output_xyz(l.segment.a), output_xyz(l.segment.b)));
   lo.crs = !r.target_crs.empty()   ? r.target_crs
            : !r.assign_crs.empty() ? r.assign_crs
                                    : manifest.crs;
@@ -166,6 +154,22 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   out.write_s = Since(t0);
   progress.Update(1.0, "done");
   return out;
+}
+
+LayerFeature Line3DFeature(const Line3D& l, const Block& block, const Eigen::Vector3d& a,
+                           const Eigen::Vector3d& b) {
+  LayerFeature f;
+  f.lines.push_back({a, b});
+  f.integers["views"] = l.Views();
+  f.reals["rms_px"] = l.rms_px;
+  f.reals["length_m"] = l.segment.Length();
+  f.strings["depth_from"] = DepthFrom(l);
+  f.strings["colour_left"] = Hex(l.colour_left);
+  f.strings["colour_right"] = Hex(l.colour_right);
+  std::vector<std::pair<std::string, int>> observations;
+  for (const auto& [v, s] : l.observations) observations.emplace_back(block.views[v].name, s);
+  f.strings["observations"] = FormatObservations(observations);
+  return f;
 }
 
 std::string FormatMatchSummary(const MatchSummary& s) {

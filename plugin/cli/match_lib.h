@@ -9,6 +9,7 @@
 #include "algorithms/eval/match_eval.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/matching/match_options.h"
+#include "io/citymodel/ogr_citymodel.h"
 
 namespace roofsweep {
 
@@ -53,5 +54,12 @@ struct MatchSummary {
 MatchSummary RunMatch(const MatchRequest& request, Progress& progress);
 
 std::string FormatMatchSummary(const MatchSummary& summary);
+
+// One feature of the lines3d layer, as `match` and `run -lines3d` write it:
+// the line from a to b (output coordinates) with views, rms_px, length_m,
+// depth_from, the two sides' colours and the observations by image name,
+// which `run -lines` reads back to restrict each line's reference views.
+LayerFeature Line3DFeature(const Line3D& line, const Block& block, const Eigen::Vector3d& a,
+                           const Eigen::Vector3d& b);
 
 }  // namespace roofsweep

@@ -46,7 +46,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-lines", &r.lines_in, "FILE",
               "start from these 3D lines (OGR line layer or segments JSON) instead of matching; "
               "lines in another CRS are reprojected to the block's")
-      .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
+      .Option("-lines3d", &r.lines3d, "FILE",
+              "also write the 3D lines (layer lines3d, as match writes it; -lines reads it back)")
       .Option("-half_planes", &r.half_planes, "FILE",
               "also write the half-planes (layer half_planes)")
       .Option("-planes", &r.planes, "FILE",
@@ -129,7 +130,8 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
       .Option("-o", &r.output, "FILE", "output with a MultiPolygonZ layer half_planes (.gpkg, ...)")
       .Option("-of|-f", &r.format, "FORMAT", "GDAL vector driver, when the extension does not tell")
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
-      .Option("-lines3d", &r.lines3d, "FILE", "also write the 3D lines (layer lines3d)")
+      .Option("-lines3d", &r.lines3d, "FILE",
+              "also write the 3D lines (layer lines3d, as match writes it; -lines reads it back)")
       .Option("-report", &r.report, "FILE", "JSON report with the stage table");
   MatchFlags flags;
   AddProcessingOptions(p, r, &flags);

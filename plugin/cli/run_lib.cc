@@ -32,6 +32,7 @@
 #include "io/core/image_io.h"
 #include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
+#include "plugin/cli/match_lib.h"
 
 namespace roofsweep {
 namespace {
@@ -329,15 +330,11 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   out.lines = static_cast<int>(matched.lines.size());
   if (!r.lines3d.empty()) {
     std::vector<LayerFeature> features;
-    for (const Line3D& l : matched.lines) {
-      LayerFeature f;
-      f.lines.push_back({frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)});
-      f.integers["views"] = l.Views();
-      f.reals["rms_px"] = l.rms_px;
-      f.reals["length_m"] = l.segment.Length();
-      f.strings["depth_from"] = DepthFrom(l);
-      features.push_back(std::move(f));
-    }
+    // As `match` writes them, so that `run -lines` on this layer sweeps
+    // the same lines with the same reference views.
+    for (const Line3D& l : matched.lines)
+      features.push_back(
+          Line3DFeature(l, block, frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)));
     FeatureLayerOptions lo;
     lo.crs = manifest.crs;
     lo.overwrite = r.overwrite;

@@ -44,6 +44,11 @@ assert names[:3] == ["read", "segments + 3D lines", "half-plane sweep"], names
 assert all(isinstance(x, str) and ": " in x for x in r["rejected"])
 PY
   [[ -s "$WORK/l.gpkg" && -s "$WORK/hp.gpkg" ]] && pass run_side_layers || fail run_side_layers "missing"
+  # The lines3d layer is the one `match` writes, observations included, so
+  # that `run -lines` on it restricts each line's reference views as the
+  # run that matched did.
+  ogrinfo -ro -al "$WORK/l.gpkg" lines3d 2>/dev/null | grep -Eq '^  observations \(String\) = [^ ]+:[0-9]+ [^ ]+:[0-9]+' \
+    && pass run_lines3d_observations || fail run_lines3d_observations "no observations in run -lines3d"
   # Every building carries the image support of its roof edges (a share),
   # and the stage table says how it came out.
   python3 - "$WORK/b.gml" <<'PY' && pass run_edge_support || fail run_edge_support "edge_support missing or out of range"
