@@ -183,13 +183,16 @@ bool Adjacent(const std::vector<SweepLine>& lines, int i, int j, const CoplanarO
 }
 
 // Side (+1 left of a -> b seen from above, as HalfPlane::side) of line i
-// on which line j lies; 0 when undecided (j's midpoint on i's line).
-int SideToward(const Segment3& i, const Segment3& j) {
+// on which the plan point p lies; 0 on i's line.
+int SideOf(const Segment3& i, const Eigen::Vector2d& p) {
   const Eigen::Vector2d d = (i.b - i.a).head<2>();
-  const Eigen::Vector2d m = j.At(0.5).head<2>() - i.a.head<2>();
+  const Eigen::Vector2d m = p - i.a.head<2>();
   const double cross = d.x() * m.y() - d.y() * m.x();
   return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
 }
+
+// ... and on which line j lies (its midpoint).
+int SideToward(const Segment3& i, const Segment3& j) { return SideOf(i, j.At(0.5).head<2>()); }
 
 // Per line, its half-planes on its sides -1 and +1 (null when not swept).
 std::vector<std::array<const HalfPlane*, 2>> SidesOf(const std::vector<SweepLine>& lines,
@@ -259,12 +262,10 @@ int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGr
     // The images see another face on the plane's side of line l.
     const auto bounds_other_face = [&](int l) {
       if (sides.empty()) return false;
-      const Segment3& s = lines[l].segment;
-      const Eigen::Vector2d d = (s.b - s.a).head<2>(), m = centre - s.a.head<2>();
-      const double cross = d.x() * m.y() - d.y() * m.x();
-      if (cross == 0) return false;
-      const HalfPlane* facing = sides[l][cross > 0 ? 1 : 0];
-      const HalfPlane* away = sides[l][cross > 0 ? 0 : 1];
+      const int side = SideOf(lines[l].segment, centre);
+      if (side == 0) return false;
+      const HalfPlane* facing = sides[l][side > 0 ? 1 : 0];
+      const HalfPlane* away = sides[l][side > 0 ? 0 : 1];
       return facing && facing->candidate && !coplanar(facing) && !coplanar(away);
     };
     // Longest lines first: they fix the plane best, and the order makes the

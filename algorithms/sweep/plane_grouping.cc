@@ -140,14 +140,12 @@ bool InConflict(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
 // within the grouping's tolerance of its own plane). Sampled at its ends,
 // quarters and middle, as a hip rises from a border to the ridge.
 bool LineOffPlane(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis& p, double step_m) {
-  auto height = [](const Eigen::Vector4d& e, const Eigen::Vector2d& x) {
-    return -(e[0] * x.x() + e[1] * x.y() + e[3]) / e[2];
-  };
   if (!(std::abs(p.plane[2]) > 1e-6 && std::abs(q.plane[2]) > 1e-6)) return false;
   for (const auto& l : q.lines_xy)
     for (int i = 0; i <= 4; ++i) {
       const Eigen::Vector2d x = l[0] + 0.25 * i * (l[1] - l[0]);
-      if (InsideConvex(p.patch, x) && std::abs(height(q.plane, x) - height(p.plane, x)) >= step_m)
+      if (InsideConvex(p.patch, x) &&
+          std::abs(PlaneZ(q.plane, x.x(), x.y()) - PlaneZ(p.plane, x.x(), x.y())) >= step_m)
         return true;
     }
   return false;

@@ -199,6 +199,17 @@ RoofPlaneHypothesis Face(const std::string& id, const Eigen::Vector3d& n,
   return h;
 }
 
+// A face as the verification scored it: similarity, score scaled by it,
+// its lines and the longest one's length.
+RoofPlaneHypothesis WithSimilarity(RoofPlaneHypothesis h, double sim, int lines = 3,
+                                   double longest_line_m = 7) {
+  h.similarity = sim;
+  h.score *= sim;
+  h.lines = lines;
+  h.longest_line_m = longest_line_m;
+  return h;
+}
+
 TEST(PlaneGrouping, TheTwoFacesOfAGableMeetAtTheRidgeInsteadOfConflicting) {
   Gable g;
   const Eigen::Vector3d ridge(0, 4, 8);
@@ -261,12 +272,8 @@ TEST(PlaneGrouping, AFlatPlaneUnderARidgeLineGivesWayToTheFacesThatHoldIt) {
   const Eigen::Vector3d west_n = Eigen::Vector3d(-t, 0, 1).normalized();
   const Eigen::Vector3d east_n = Eigen::Vector3d(t, 0, 1).normalized();
   const Eigen::Vector3d ridge(2.5, 0, 10 + 2.5 * t);
-  auto face = [](RoofPlaneHypothesis h, double sim) {
-    h.similarity = sim;
-    h.score *= sim;
-    h.lines = 3;
-    h.longest_line_m = 10;
-    return h;
+  auto face = [](const RoofPlaneHypothesis& h, double sim) {
+    return WithSimilarity(h, sim, 3, 10);
   };
   const std::array<Eigen::Vector2d, 2> ridge_xy = {Eigen::Vector2d(2.5, 3),
                                                    Eigen::Vector2d(2.5, 7)};
@@ -322,20 +329,12 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   // ridges 1.2 m apart in height; one plane carried over both beats each
   // face alone by its area, though each face fits the images better.
   const Eigen::Vector3d north = Eigen::Vector3d(0, 3, 4).normalized();
-  auto with_similarity = [](RoofPlaneHypothesis h, double sim, int lines = 3,
-                            double longest_line_m = 7) {
-    h.similarity = sim;
-    h.score *= sim;
-    h.lines = lines;
-    h.longest_line_m = longest_line_m;
-    return h;
-  };
   const RoofPlaneHypothesis west =
-      with_similarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.93);
+      WithSimilarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.93);
   const RoofPlaneHypothesis east =
-      with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89);
+      WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89);
   const RoofPlaneHypothesis across =
-      with_similarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 15 * 5.6), 0.74);
+      WithSimilarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 15 * 5.6), 0.74);
   std::vector<RoofPlaneHypothesis> planes = {across, west, east};
   std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 2u);
@@ -359,20 +358,20 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   // A face that fits the images worse than the large plane does not count
   // towards replacing it, and one face alone never does.
   planes = {across, west,
-            with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.70)};
+            WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.70)};
   ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
   // Nor do faces that fit the images only a little better: pieces of one
   // face seen as two.
-  planes = {across, with_similarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.8),
-            with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.8)};
+  planes = {across, WithSimilarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.8),
+            WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.8)};
   ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
   // Nor do planes of one line (the grouping's minimum is two) ...
   planes = {across, west,
-            with_similarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89, 1)};
+            WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89, 1)};
   ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
@@ -380,7 +379,7 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   // samples well outweigh the large plane together.
   planes = {across};
   for (int i = 0; i < 5; ++i)
-    planes.push_back(with_similarity(
+    planes.push_back(WithSimilarity(
         Face("piece " + std::to_string(i), north, {0, 0, 8.6}, 3 * i, 0, 3 * i + 3, 5.6, 40), 0.9,
         2, 2.5));
   const std::vector<RoofPlaneHypothesis> pieces = planes;
@@ -394,7 +393,7 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
 
   // Nor do faces whose evidence together is less than the large plane's.
   const RoofPlaneHypothesis big_across =
-      with_similarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 2.0 * 15 * 5.6), 0.74);
+      WithSimilarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 2.0 * 15 * 5.6), 0.74);
   planes = {big_across, west, east};
   ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
@@ -403,7 +402,7 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   // plane over the east house's place keeps it out, and the west face
   // alone does not replace the large plane.
   const RoofPlaneHypothesis other =
-      with_similarity(Face("other", north, {0, 0, 8.0}, 10, 0, 20, 5.6, 1000), 0.95);
+      WithSimilarity(Face("other", north, {0, 0, 8.0}, 10, 0, 20, 5.6, 1000), 0.95);
   planes = {across, west, east, other};
   rejected = ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 2u);
