@@ -194,6 +194,12 @@ int SideOf(const Segment3& i, const Eigen::Vector2d& p) {
 // ... and on which line j lies (its midpoint).
 int SideToward(const Segment3& i, const Segment3& j) { return SideOf(i, j.At(0.5).head<2>()); }
 
+// A swept side that proposes (is a candidate for) a plane within the
+// angle whose cosine is cos_max of `plane`.
+bool CoplanarCandidate(const HalfPlane* h, const Eigen::Vector4d& plane, double cos_max) {
+  return h && h->candidate && std::abs(h->plane.head<3>().dot(plane.head<3>())) >= cos_max;
+}
+
 // Per line, its half-planes on its sides -1 and +1 (null when not swept).
 std::vector<std::array<const HalfPlane*, 2>> SidesOf(const std::vector<SweepLine>& lines,
                                                      const std::vector<HalfPlane>& half_planes) {
@@ -211,9 +217,7 @@ bool RunsPastBoundingLine(const std::vector<SweepLine>& lines,
                           const PlaneGroup& g, const CoplanarOptions& o) {
   const double cos_max = std::cos(o.continuation_angle_deg * kDeg);
   const double sin_horizontal = std::sin(o.parallel_angle_deg * kDeg);
-  const auto coplanar = [&](const HalfPlane* h) {
-    return h && h->candidate && std::abs(h->plane.head<3>().dot(g.plane.head<3>())) >= cos_max;
-  };
+  const auto coplanar = [&](const HalfPlane* h) { return CoplanarCandidate(h, g.plane, cos_max); };
   for (int k = 0; k < 2; ++k) {
     const int i = g.lines[k], j = g.lines[1 - k];
     if (i < 0 || i >= static_cast<int>(sides.size())) continue;
@@ -254,7 +258,7 @@ int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGr
   int attached = 0;
   for (PlaneGroup& g : *planes) {
     const auto coplanar = [&](const HalfPlane* h) {
-      return h && h->candidate && std::abs(h->plane.head<3>().dot(g.plane.head<3>())) >= cos_max;
+      return CoplanarCandidate(h, g.plane, cos_max);
     };
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     for (const Eigen::Vector2d& p : g.patch) centre += p;
