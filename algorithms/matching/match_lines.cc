@@ -92,6 +92,21 @@ struct Verified {
 
 }  // namespace
 
+std::vector<Segments2D> ExtractViewSegments(const std::vector<cv::Mat>& images,
+                                            const MatchOptions& o,
+                                            const EdgeOptions& edge_options) {
+  std::vector<Segments2D> out(images.size());
+  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
+    out[v] = ExtractSegments(images[v], edge_options);
+    if (!o.match_texture) {
+      Segments2D& s = out[v];
+      s.erase(std::remove_if(s.begin(), s.end(), [](const Segment2D& g) { return g.texture; }),
+              s.end());
+    }
+  });
+  return out;
+}
+
 MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
                        const MatchOptions& o, const EdgeOptions& edge_options, Progress& progress,
                        const std::vector<Segment3>* truth) {
@@ -107,15 +122,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
   }
   auto t0 = std::chrono::steady_clock::now();
   ReportOrCancel(progress, 0.0, "edges");
-  res.segments.resize(nv);
-  tbb::parallel_for(0, nv, [&](int v) {
-    res.segments[v] = ExtractSegments(images[v], edge_options);
-    if (!o.match_texture) {
-      Segments2D& s = res.segments[v];
-      s.erase(std::remove_if(s.begin(), s.end(), [](const Segment2D& g) { return g.texture; }),
-              s.end());
-    }
-  });
+  res.segments = ExtractViewSegments(images, o, edge_options);
   res.timings.edges_s = Seconds(t0);
   for (const auto& s : res.segments) res.funnel.segments += static_cast<long long>(s.size());
 

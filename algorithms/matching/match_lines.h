@@ -107,6 +107,13 @@ struct MatchResult {
 // result with a message. `truth_edges` (local frame) enables the
 // ground-truth counts of the funnel. Throws roofsweep::Error when the image
 // count differs from the view count.
+// The segments of every view as MatchLines works on them (texture
+// segments left out unless MatchOptions::match_texture): the segment ids of
+// Line3D::observations index these.
+std::vector<Segments2D> ExtractViewSegments(const std::vector<cv::Mat>& images,
+                                            const MatchOptions& options,
+                                            const EdgeOptions& edge_options);
+
 MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
                        const MatchOptions& options, const EdgeOptions& edge_options,
                        Progress& progress, const std::vector<Segment3>* truth_edges = nullptr);
