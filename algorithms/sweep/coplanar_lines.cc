@@ -182,15 +182,6 @@ bool Adjacent(const std::vector<SweepLine>& lines, int i, int j, const CoplanarO
   return true;
 }
 
-// Side (+1 left of a -> b seen from above, as HalfPlane::side) of line i
-// on which the plan point p lies; 0 on i's line.
-int SideOf(const Segment3& i, const Eigen::Vector2d& p) {
-  const Eigen::Vector2d d = (i.b - i.a).head<2>();
-  const Eigen::Vector2d m = p - i.a.head<2>();
-  const double cross = d.x() * m.y() - d.y() * m.x();
-  return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
-}
-
 // ... and on which line j lies (its midpoint).
 int SideToward(const Segment3& i, const Segment3& j) { return SideOf(i, j.At(0.5).head<2>()); }
 

@@ -67,6 +67,15 @@ struct HalfPlane {
   std::vector<double> profile;
 };
 
+// The side of `line` (as HalfPlane::side: +1 left of a -> b seen from
+// above) on which the plan point p lies; 0 on the line.
+inline int SideOf(const Segment3& line, const Eigen::Vector2d& p) {
+  const Eigen::Vector2d d = (line.b - line.a).head<2>();
+  const Eigen::Vector2d m = p - line.a.head<2>();
+  const double cross = d.x() * m.y() - d.y() * m.x();
+  return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+}
+
 // The Sim a side with a candidate's shape needs to be a candidate, at the
 // image quality of the block these sides were swept from
 // (SweepOptions::calibration_peak_ratio).
