@@ -31,7 +31,8 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
-  bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false;
+  bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
+       no_lift = false;
   bool keep_eave_planes = false;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
@@ -81,6 +82,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-no_mirror_faces", &no_mirror,
             "do not propose, beyond a ridge line, the mirror image of a roof face found from "
             "one side of it only (completion by symmetry, verified like any plane)")
+      .Flag("-no_lift_lines", &no_lift,
+            "one pass only: do not lift the image segments no 3D line explains onto the roof "
+            "planes found (where a view across them confirms the depth) and sweep again with "
+            "those that bound a plane")
       .Flag("-no_footprint_growth", &no_growth,
             "with footprints, do not grow a sloped face seen over part of its footprint along "
             "its contour lines by the strips of the footprint the images confirm")
@@ -104,6 +109,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.line_planes = !sweep_only;
   r.drop_eave_planes = !keep_eave_planes;
   r.mirror_faces = !no_mirror;
+  r.lift_lines = !no_lift;
   r.footprint_growth = !no_growth;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;

@@ -368,16 +368,117 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (const auto& [v, seg] : l.observations) s.views.push_back(v);
     lines.push_back(std::move(s));
   }
-  SubProgress sweep_progress(progress, 0.35, 0.95);
-  const std::vector<HalfPlane> hps = SweepHalfPlanes(block, images, lines, r.sweep, sweep_progress);
-  out.sides = static_cast<int>(hps.size());
-  for (const HalfPlane& h : hps) out.accepted += h.accepted;
-  out.stages.push_back(
-      {"half-plane sweep",
-       StrFormat("%d sides, %d accepted, candidates from Sim %.2f (%d lines "
-                 "near the ground)",
-                 out.sides, out.accepted, CandidateThreshold(hps, r.sweep), near_ground),
-       Since(t0)});
+  const bool two_passes = r.lift_lines && !r.stop_after_sweep;
+  auto sweep = [&](const std::vector<SweepLine>& swept, double from, double to,
+                   const std::string& stage, const std::string& extra) {
+    SubProgress sweep_progress(progress, from, to);
+    std::vector<HalfPlane> h = SweepHalfPlanes(block, images, swept, r.sweep, sweep_progress);
+    out.sides = static_cast<int>(h.size());
+    out.accepted = 0;
+    for (const HalfPlane& x : h) out.accepted += x.accepted;
+    out.stages.push_back(
+        {stage,
+         StrFormat("%d sides, %d accepted, candidates from Sim %.2f (%s)", out.sides, out.accepted,
+                   CandidateThreshold(h, r.sweep), extra.c_str()),
+         Since(t0)});
+    return h;
+  };
+  std::vector<HalfPlane> hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep",
+                                     StrFormat("%d lines near the ground", near_ground));
+
+  // §4 and §5: half-planes grouped into planes, every plane's patch
+  // verified against all views that see it, then conflicts resolved by the
+  // verified evidence (patch area x score). `final_pass`: the rejections and
+  // the trace are the ones reported.
+  std::vector<PlaneTrace> traces;
+  std::vector<PlaneTrace>* trace = r.planes.empty() ? nullptr : &traces;
+  auto find_planes = [&](std::vector<SweepLine>& swept, const std::vector<HalfPlane>& sides,
+                         bool final_pass, double from, double to) {
+    const char* pass = two_passes ? (final_pass ? " (pass 2)" : " (pass 1)") : "";
+    std::vector<std::string> rejected;
+    t0 = Clock::now();
+    GroupingResult grouped = GroupHalfPlanes(swept, sides, r.grouping);
+    const int swept_planes = static_cast<int>(grouped.planes.size());
+    int candidates = 0;
+    for (const HalfPlane& h : sides) candidates += h.candidate;
+    int pair_planes = 0;
+    if (r.line_planes) {
+      std::vector<PlaneGroup> pairs =
+          PlanesFromLinePairs(swept, &grouped.planes, r.coplanar, &sides);
+      pair_planes = static_cast<int>(pairs.size());
+      for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
+    }
+    const int attached = AttachCoplanarLines(swept, &grouped.planes, r.coplanar, &sides);
+    const std::vector<std::string> one_line = DropWeaklySupported(&grouped.planes, r.grouping);
+    rejected.insert(rejected.end(), one_line.begin(), one_line.end());
+    out.planes = static_cast<int>(grouped.planes.size());
+    out.stages.push_back(
+        {std::string("grouping into planes") + pass,
+         StrFormat("%d planes from %d candidate sides, %d from line pairs, %d lines joined, %zu "
+                   "with fewer than %d lines dropped",
+                   swept_planes, candidates, pair_planes, attached, one_line.size(),
+                   r.grouping.min_lines),
+         Since(t0)});
+
+    t0 = Clock::now();
+    std::vector<RoofPlaneHypothesis> found = ToRoofPlanes(grouped.planes, &swept);
+    SubProgress verify_progress(progress, from, to);
+    const std::vector<PlaneVerification> checks =
+        VerifyPlanes(block, images, found, r.verify, verify_progress);
+    const size_t n_planes = found.size();
+    std::vector<RoofPlaneHypothesis> verified;
+    KeepVerified(std::move(found), checks, &verified, &rejected, final_pass ? trace : nullptr);
+    const size_t n_verified = verified.size();
+    const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping);
+    rejected.insert(rejected.end(), conflicts.begin(), conflicts.end());
+    const std::vector<std::string> orphans = DropOrphanedPlanes(&verified, r.grouping);
+    rejected.insert(rejected.end(), orphans.begin(), orphans.end());
+    out.stages.push_back({std::string("verification") + pass,
+                          StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
+                                    n_verified, n_planes, verified.size()),
+                          Since(t0)});
+    if (final_pass) out.rejected.insert(out.rejected.end(), rejected.begin(), rejected.end());
+    return verified;
+  };
+
+  std::vector<RoofPlaneHypothesis> roof_planes;
+  if (two_passes) {
+    roof_planes = find_planes(lines, hps, false, 0.6, 0.62);
+    t0 = Clock::now();
+    std::vector<Segments2D> segments = r.lines_in.empty()
+                                           ? std::move(matched.segments)
+                                           : ExtractViewSegments(images, r.match, r.edges);
+    std::vector<std::vector<bool>> used(segments.size());
+    for (size_t v = 0; v < segments.size(); ++v) used[v].assign(segments[v].size(), false);
+    std::vector<Segment3> known;
+    for (const Line3D& l : matched.lines) {
+      known.push_back(l.segment);
+      for (const auto& [v, id] : l.observations)
+        if (v >= 0 && v < static_cast<int>(used.size()) && id >= 0 &&
+            id < static_cast<int>(used[v].size()))
+          used[v][id] = true;
+    }
+    const std::vector<LiftedLine> lifts =
+        LiftSegmentsOntoPlanes(block, segments, used, roof_planes, known, r.lift);
+    auto to_sweep = [](const LiftedLine& l) {
+      SweepLine s{l.segment, {}, std::nan("")};
+      for (const auto& [v, id] : l.observations) s.views.push_back(v);
+      return s;
+    };
+    std::vector<SweepLine> probe;
+    for (const LiftedLine& l : lifts) probe.push_back(to_sweep(l));
+    SubProgress probe_progress(progress, 0.62, 0.65);
+    const std::vector<LiftedLine> borders = KeepBorderLifts(
+        lifts, SweepHalfPlanes(block, images, probe, r.sweep, probe_progress), roof_planes, r.lift);
+    for (const LiftedLine& l : borders) lines.push_back(to_sweep(l));
+    out.stages.push_back({"segments lifted onto planes",
+                          StrFormat("%zu lifted onto %zu planes, %zu of them border lines",
+                                    lifts.size(), roof_planes.size(), borders.size()),
+                          Since(t0)});
+    t0 = Clock::now();
+    hps = sweep(lines, 0.65, 0.95, "half-plane sweep (pass 2)",
+                StrFormat("%zu lines lifted", borders.size()));
+  }
 
   const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
   if (!half_plane_path.empty()) {
@@ -426,53 +527,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     return out;
   }
 
-  t0 = Clock::now();
-  GroupingResult grouped = GroupHalfPlanes(lines, hps, r.grouping);
-  const int swept_planes = static_cast<int>(grouped.planes.size());
-  int candidates = 0;
-  for (const HalfPlane& h : hps) candidates += h.candidate;
-  int pair_planes = 0, attached = 0;
-  if (r.line_planes) {
-    std::vector<PlaneGroup> pairs = PlanesFromLinePairs(lines, &grouped.planes, r.coplanar, &hps);
-    pair_planes = static_cast<int>(pairs.size());
-    for (PlaneGroup& g : pairs) grouped.planes.push_back(std::move(g));
-  }
-  attached = AttachCoplanarLines(lines, &grouped.planes, r.coplanar, &hps);
-  const std::vector<std::string> one_line = DropWeaklySupported(&grouped.planes, r.grouping);
-  out.rejected.insert(out.rejected.end(), one_line.begin(), one_line.end());
-  out.planes = static_cast<int>(grouped.planes.size());
-  out.stages.push_back(
-      {"grouping into planes",
-       StrFormat("%d planes from %d candidate sides, %d from line pairs, %d lines joined, %zu "
-                 "with fewer than %d lines dropped",
-                 swept_planes, candidates, pair_planes, attached, one_line.size(),
-                 r.grouping.min_lines),
-       Since(t0)});
-
-  // §5: every plane's patch verified against all views that see it, then
-  // conflicts resolved by the verified evidence (patch area x score).
-  t0 = Clock::now();
-  std::vector<PlaneTrace> traces;
-  std::vector<PlaneTrace>* trace = r.planes.empty() ? nullptr : &traces;
-  std::vector<RoofPlaneHypothesis> roof_planes = ToRoofPlanes(grouped.planes, &lines);
-  {
-    SubProgress verify_progress(progress, 0.95, 0.99);
-    const std::vector<PlaneVerification> checks =
-        VerifyPlanes(block, images, roof_planes, r.verify, verify_progress);
-    const size_t n_planes = roof_planes.size();
-    std::vector<RoofPlaneHypothesis> verified;
-    KeepVerified(std::move(roof_planes), checks, &verified, &out.rejected, trace);
-    const size_t n_verified = verified.size();
-    const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping);
-    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
-    const std::vector<std::string> orphans = DropOrphanedPlanes(&verified, r.grouping);
-    out.rejected.insert(out.rejected.end(), orphans.begin(), orphans.end());
-    out.stages.push_back({"verification",
-                          StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
-                                    n_verified, n_planes, verified.size()),
-                          Since(t0)});
-    roof_planes = std::move(verified);
-  }
+  roof_planes = find_planes(lines, hps, true, 0.95, 0.99);
 
   // Every completion step below proposes planes that are verified like
   // the sweep's own, then settled in the conflicts with those kept so far;

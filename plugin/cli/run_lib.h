@@ -13,6 +13,7 @@
 #include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
 #include "algorithms/sweep/eave_planes.h"
+#include "algorithms/sweep/lift_lines.h"
 #include "algorithms/sweep/merge_coplanar_neighbours.h"
 #include "algorithms/sweep/plane_grouping.h"
 #include "algorithms/sweep/sweep_options.h"
@@ -70,6 +71,11 @@ struct RunRequest {
   // line proposes the face beyond the ridge, verified like any plane.
   bool mirror_faces = true;
   MirrorCompletionOptions mirror;
+  // A second pass: image segments no 3D line explains are lifted onto the
+  // planes the first pass kept (LiftSegmentsOntoPlanes), and the sweep,
+  // grouping and verification run again over all lines.
+  bool lift_lines = true;
+  LiftOptions lift;
   // Without footprints: terraced houses are cut apart where their shared
   // roof changes colour across its whole depth (FindColourBreaks), as
   // where a 3D line runs down a party wall (AssemblyOptions::
