@@ -294,7 +294,8 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
 
 std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
                                        const std::vector<SweepLine>& lines,
-                                       const SweepOptions& options, Progress& progress) {
+                                       const SweepOptions& options, Progress& progress,
+                                       const std::vector<HalfPlane>* previous) {
   const int n_views = static_cast<int>(block.views.size());
   if (static_cast<int>(images.size()) != n_views)
     throw Error("sweep: " + std::to_string(images.size()) + " images for " +
@@ -355,12 +356,42 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv:
   });
 
   std::vector<HalfPlane> out(2 * static_cast<size_t>(n_lines));
+  // A line swept before keeps its sides unless an added line comes into its
+  // band's reach in some view (the only way one line's sides depend on the
+  // others: Blockers, with the same box test).
+  std::vector<char> redo(n_lines, 1);
+  const int n_before = previous ? std::min(n_lines, static_cast<int>(previous->size() / 2)) : 0;
+  if (n_before > 0) {
+    tbb::parallel_for(0, n_before, [&](int i) {
+      bool reached = false;
+      for (int v = 0; v < n_views && !reached; ++v) {
+        const Projected& me = projected[v][i];
+        const double reach = options.band_width_px;
+        const double x0 = std::min(me.p0.x(), me.p1.x()) - reach,
+                     x1 = std::max(me.p0.x(), me.p1.x()) + reach;
+        const double y0 = std::min(me.p0.y(), me.p1.y()) - reach,
+                     y1 = std::max(me.p0.y(), me.p1.y()) + reach;
+        for (int j = n_before; j < n_lines && !reached; ++j) {
+          const Projected& o = projected[v][j];
+          reached = o.front && std::max(o.p0.x(), o.p1.x()) >= x0 &&
+                    std::min(o.p0.x(), o.p1.x()) <= x1 && std::max(o.p0.y(), o.p1.y()) >= y0 &&
+                    std::min(o.p0.y(), o.p1.y()) <= y1;
+        }
+      }
+      if (!reached) {
+        redo[i] = 0;
+        out[2 * static_cast<size_t>(i)] = (*previous)[2 * static_cast<size_t>(i)];
+        out[2 * static_cast<size_t>(i) + 1] = (*previous)[2 * static_cast<size_t>(i) + 1];
+      }
+    });
+  }
   constexpr int kChunk = 64;
   for (int begin = 0; begin < n_lines; begin += kChunk) {
     ReportOrCancel(progress, 0.05 + 0.95 * begin / std::max(1, n_lines), "sweep: half-planes");
     const int end = std::min(n_lines, begin + kChunk);
     tbb::parallel_for(0, 2 * (end - begin), [&](int k) {
       const int line = begin + k / 2;
+      if (!redo[line]) return;
       const int side = k % 2 == 0 ? 1 : -1;
       out[2 * static_cast<size_t>(line) + k % 2] =
           SweepSide(block, textures, projected, lines, line, side, options);

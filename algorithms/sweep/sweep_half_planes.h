@@ -87,8 +87,14 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
 // lines (TBB); the result does not depend on the thread count. Throws
 // roofsweep::Error for a count or size mismatch, Cancelled when progress
 // asks to stop.
+//
+// `previous`: the result of an earlier call on the first previous->size() / 2
+// of these lines, before the others were added. Those lines keep their
+// sides unless an added line comes near their band in some view; the
+// result equals a sweep of all lines from scratch.
 std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
                                        const std::vector<SweepLine>& lines,
-                                       const SweepOptions& options, Progress& progress);
+                                       const SweepOptions& options, Progress& progress,
+                                       const std::vector<HalfPlane>* previous = nullptr);
 
 }  // namespace roofsweep

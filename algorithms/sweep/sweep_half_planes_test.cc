@@ -212,6 +212,33 @@ TEST(SweepHalfPlanes, DeterministicAcrossThreadCounts) {
   }
 }
 
+TEST(SweepHalfPlanes, LinesAddedLaterGiveTheSameSidesAsASweepFromScratch) {
+  TestScene scene;
+  const Quad north = Face(1, 25, 6, true, 7);
+  scene.quads = {north, Face(-1, 35, 6, true, 8)};
+  const Block block = sweep_test::FourViewBlock();
+  const auto images = sweep_test::RenderAll(scene, block);
+  NullProgress progress;
+  // The ridge, and a line far from it.
+  std::vector<SweepLine> lines = {{kRidge, {}}, {Segment3{{-5, 150, 10}, {5, 150, 10}}, {}}};
+  const auto before = SweepHalfPlanes(block, images, lines, SweepOptions(), progress);
+  // A line across the north face 1.5 m from the ridge: it bounds the band.
+  const double z = 10 - 1.5 * std::tan(25 * kDeg);
+  lines.push_back({Segment3{{-5, 1.5, z}, {5, 1.5, z}}, {}});
+  const auto scratch = SweepHalfPlanes(block, images, lines, SweepOptions(), progress);
+  const auto added = SweepHalfPlanes(block, images, lines, SweepOptions(), progress, &before);
+  ASSERT_EQ(scratch.size(), added.size());
+  EXPECT_NE(scratch[0].extent_m, before[0].extent_m);
+  EXPECT_NE(scratch[0].points_detected, before[0].points_detected);
+  for (size_t i = 0; i < scratch.size(); ++i) {
+    EXPECT_EQ(scratch[i].theta_deg, added[i].theta_deg);
+    EXPECT_EQ(scratch[i].similarity, added[i].similarity);
+    EXPECT_EQ(scratch[i].points_detected, added[i].points_detected);
+    EXPECT_EQ(scratch[i].candidate, added[i].candidate);
+    EXPECT_EQ(scratch[i].profile, added[i].profile);
+  }
+}
+
 TEST(SweepHalfPlanes, BadInputIsAnError) {
   const Block block = sweep_test::FourViewBlock();
   NullProgress progress;

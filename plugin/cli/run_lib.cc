@@ -370,9 +370,11 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   }
   const bool two_passes = r.lift_lines && !r.stop_after_sweep;
   auto sweep = [&](const std::vector<SweepLine>& swept, double from, double to,
-                   const std::string& stage, const std::string& extra) {
+                   const std::string& stage, const std::string& extra,
+                   const std::vector<HalfPlane>* previous) {
     SubProgress sweep_progress(progress, from, to);
-    std::vector<HalfPlane> h = SweepHalfPlanes(block, images, swept, r.sweep, sweep_progress);
+    std::vector<HalfPlane> h =
+        SweepHalfPlanes(block, images, swept, r.sweep, sweep_progress, previous);
     out.sides = static_cast<int>(h.size());
     out.accepted = 0;
     for (const HalfPlane& x : h) out.accepted += x.accepted;
@@ -384,7 +386,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     return h;
   };
   std::vector<HalfPlane> hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep",
-                                     StrFormat("%d lines near the ground", near_ground));
+                                     StrFormat("%d lines near the ground", near_ground), nullptr);
 
   // §4 and §5: half-planes grouped into planes, every plane's patch
   // verified against all views that see it, then conflicts resolved by the
@@ -476,8 +478,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                                     lifts.size(), roof_planes.size(), borders.size()),
                           Since(t0)});
     t0 = Clock::now();
+    // Only the lines whose bands a lifted line reaches are swept again.
     hps = sweep(lines, 0.65, 0.95, "half-plane sweep (pass 2)",
-                StrFormat("%zu lines lifted", borders.size()));
+                StrFormat("%zu lines lifted", borders.size()), &hps);
   }
 
   const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
