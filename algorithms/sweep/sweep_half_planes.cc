@@ -39,25 +39,25 @@ std::string Format(const char* fmt, double a, double b) {
   return buf;
 }
 
+// True when the projection o comes within `reach` of me's bounding box:
+// o may bound me's band.
+bool NearBand(const Projected& me, const Projected& o, double reach) {
+  if (!o.front) return false;
+  return std::max(o.p0.x(), o.p1.x()) >= std::min(me.p0.x(), me.p1.x()) - reach &&
+         std::min(o.p0.x(), o.p1.x()) <= std::max(me.p0.x(), me.p1.x()) + reach &&
+         std::max(o.p0.y(), o.p1.y()) >= std::min(me.p0.y(), me.p1.y()) - reach &&
+         std::min(o.p0.y(), o.p1.y()) <= std::max(me.p0.y(), me.p1.y()) + reach;
+}
+
 // Blockers of the band of line `self` in view `view`: the other lines'
 // projections that come near it.
 std::vector<Segment2> Blockers(const std::vector<std::vector<Projected>>& projected, int view,
                                int self, double reach) {
   std::vector<Segment2> out;
   const std::vector<Projected>& lines = projected[view];
-  const Projected& me = lines[self];
-  const double x0 = std::min(me.p0.x(), me.p1.x()) - reach,
-               x1 = std::max(me.p0.x(), me.p1.x()) + reach;
-  const double y0 = std::min(me.p0.y(), me.p1.y()) - reach,
-               y1 = std::max(me.p0.y(), me.p1.y()) + reach;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    const Projected& o = lines[i];
-    if (static_cast<int>(i) == self || !o.front) continue;
-    if (std::max(o.p0.x(), o.p1.x()) < x0 || std::min(o.p0.x(), o.p1.x()) > x1 ||
-        std::max(o.p0.y(), o.p1.y()) < y0 || std::min(o.p0.y(), o.p1.y()) > y1)
-      continue;
-    out.emplace_back(o.p0, o.p1);
-  }
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (static_cast<int>(i) != self && NearBand(lines[self], lines[i], reach))
+      out.emplace_back(lines[i].p0, lines[i].p1);
   return out;
 }
 
@@ -364,20 +364,9 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv:
   if (n_before > 0) {
     tbb::parallel_for(0, n_before, [&](int i) {
       bool reached = false;
-      for (int v = 0; v < n_views && !reached; ++v) {
-        const Projected& me = projected[v][i];
-        const double reach = options.band_width_px;
-        const double x0 = std::min(me.p0.x(), me.p1.x()) - reach,
-                     x1 = std::max(me.p0.x(), me.p1.x()) + reach;
-        const double y0 = std::min(me.p0.y(), me.p1.y()) - reach,
-                     y1 = std::max(me.p0.y(), me.p1.y()) + reach;
-        for (int j = n_before; j < n_lines && !reached; ++j) {
-          const Projected& o = projected[v][j];
-          reached = o.front && std::max(o.p0.x(), o.p1.x()) >= x0 &&
-                    std::min(o.p0.x(), o.p1.x()) <= x1 && std::max(o.p0.y(), o.p1.y()) >= y0 &&
-                    std::min(o.p0.y(), o.p1.y()) <= y1;
-        }
-      }
+      for (int v = 0; v < n_views && !reached; ++v)
+        for (int j = n_before; j < n_lines && !reached; ++j)
+          reached = NearBand(projected[v][i], projected[v][j], options.band_width_px);
       if (!reached) {
         redo[i] = 0;
         out[2 * static_cast<size_t>(i)] = (*previous)[2 * static_cast<size_t>(i)];
