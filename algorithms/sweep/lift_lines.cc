@@ -59,10 +59,8 @@ bool InImage(const Camera& cam, const Eigen::Vector2d& p) {
   return p.x() >= 0 && p.y() >= 0 && p.x() <= cam.width && p.y() <= cam.height;
 }
 
-struct Candidate {
-  LiftedLine line;
-  int confirmations = 0;
-};
+// Views that confirm a lift: all its observations but the lifted one.
+size_t Confirmations(const LiftedLine& l) { return l.observations.size() - 1; }
 
 // How much of the projection p-q detected segments of a view cover, as
 // a fraction of its length, and the longest such segment (-1 when none).
@@ -143,7 +141,7 @@ std::vector<LiftedLine> LiftSegmentsOntoPlanes(const Block& block,
   // Candidates per (plane, view), gathered in parallel and concatenated in
   // that order so the result does not depend on the thread count.
   const int np = static_cast<int>(planes.size());
-  std::vector<std::vector<Candidate>> found(static_cast<size_t>(np) * nv);
+  std::vector<std::vector<LiftedLine>> found(static_cast<size_t>(np) * nv);
   tbb::parallel_for(0, np * nv, [&](int job) {
     const int pi = job / nv, v = job % nv;
     const RoofPlaneHypothesis& plane = planes[pi];
@@ -172,10 +170,10 @@ std::vector<LiftedLine> LiftSegmentsOntoPlanes(const Block& block,
       if (t1 <= t0) continue;
       const Eigen::Vector3d a = *a0 + t0 * (*b0 - *a0), b = *a0 + t1 * (*b0 - *a0);
       if ((b - a).norm() < o.min_length_m) continue;
-      Candidate c;
-      c.line.segment = {a, b};
-      c.line.plane = pi;
-      c.line.observations.emplace_back(v, id);
+      LiftedLine c;
+      c.segment = {a, b};
+      c.plane = pi;
+      c.observations.emplace_back(v, id);
       for (int w = 0; w < nv; ++w) {
         if (w == v) continue;
         const Camera& cw = block.CameraOf(block.views[w]);
@@ -184,8 +182,7 @@ std::vector<LiftedLine> LiftSegmentsOntoPlanes(const Block& block,
         if (!pa || !pb || !InImage(cw, *pa) || !InImage(cw, *pb)) continue;
         int best = -1;
         if (Coverage(segments[w], used[w], index[w], *pa, *pb, o, &best) >= o.confirm_coverage) {
-          c.line.observations.emplace_back(w, best);
-          ++c.confirmations;
+          c.observations.emplace_back(w, best);
           // Does w fix the depth? The epipolar line of w through the
           // segment's middle in v, against the segment.
           const Eigen::Vector3d mid = 0.5 * (a + b);
@@ -194,33 +191,33 @@ std::vector<LiftedLine> LiftSegmentsOntoPlanes(const Block& block,
           const auto m1 = Project(cam, view.pose, mid + base);
           if (m0 && m1 && (*m1 - *m0).norm() > 1e-9) {
             const double along = std::abs((*m1 - *m0).normalized().dot(s.Direction()));
-            if (along < std::cos(o.fixing_angle_deg * kDegToRad)) ++c.line.fixing;
+            if (along < std::cos(o.fixing_angle_deg * kDegToRad)) ++c.fixing;
           }
         }
       }
-      if (c.confirmations > 0 && c.line.fixing >= o.min_fixing) found[job].push_back(std::move(c));
+      if (Confirmations(c) > 0 && c.fixing >= o.min_fixing) found[job].push_back(std::move(c));
     }
   });
 
-  std::vector<Candidate> all;
+  std::vector<LiftedLine> all;
   for (auto& f : found)
-    for (Candidate& c : f) all.push_back(std::move(c));
-  std::stable_sort(all.begin(), all.end(), [](const Candidate& x, const Candidate& y) {
-    if (x.confirmations != y.confirmations) return x.confirmations > y.confirmations;
-    return x.line.segment.Length() > y.line.segment.Length();
+    for (LiftedLine& c : f) all.push_back(std::move(c));
+  std::stable_sort(all.begin(), all.end(), [](const LiftedLine& x, const LiftedLine& y) {
+    if (Confirmations(x) != Confirmations(y)) return Confirmations(x) > Confirmations(y);
+    return x.segment.Length() > y.segment.Length();
   });
   std::vector<std::vector<bool>> taken(nv);
   for (int v = 0; v < nv; ++v) taken[v].assign(segments[v].size(), false);
   std::vector<LiftedLine> out;
-  for (Candidate& c : all) {
-    const auto [v, id] = c.line.observations.front();
+  for (LiftedLine& c : all) {
+    const auto [v, id] = c.observations.front();
     if (taken[v][id]) continue;
     bool dup = false;
-    for (const Segment3& k : known) dup = dup || Duplicate(k, c.line.segment, o);
-    for (const LiftedLine& l : out) dup = dup || Duplicate(l.segment, c.line.segment, o);
+    for (const Segment3& k : known) dup = dup || Duplicate(k, c.segment, o);
+    for (const LiftedLine& l : out) dup = dup || Duplicate(l.segment, c.segment, o);
     if (dup) continue;
-    for (const auto& [w, s] : c.line.observations) taken[w][s] = true;
-    out.push_back(std::move(c.line));
+    for (const auto& [w, s] : c.observations) taken[w][s] = true;
+    out.push_back(std::move(c));
   }
   return out;
 }

@@ -183,6 +183,22 @@ TEST(SweepHalfPlanes, LinePartlyOutsideEveryView) {
   }
 }
 
+// The two sweeps gave the same sides, bit for bit.
+void ExpectSameSides(const std::vector<HalfPlane>& a, const std::vector<HalfPlane>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].theta_deg, b[i].theta_deg);
+    EXPECT_EQ(a[i].similarity, b[i].similarity);
+    EXPECT_EQ(a[i].curvature, b[i].curvature);
+    EXPECT_EQ(a[i].reference_view, b[i].reference_view);
+    EXPECT_EQ(a[i].points, b[i].points);
+    EXPECT_EQ(a[i].points_detected, b[i].points_detected);
+    EXPECT_EQ(a[i].accepted, b[i].accepted);
+    EXPECT_EQ(a[i].candidate, b[i].candidate);
+    EXPECT_EQ(a[i].profile, b[i].profile);
+  }
+}
+
 TEST(SweepHalfPlanes, DeterministicAcrossThreadCounts) {
   TestScene scene;
   scene.quads = {Face(1, 25, 6, true, 7), Face(-1, 35, 6, true, 8)};
@@ -200,16 +216,7 @@ TEST(SweepHalfPlanes, DeterministicAcrossThreadCounts) {
   std::vector<HalfPlane> b;
   tbb::task_arena one(1);
   one.execute([&] { b = SweepHalfPlanes(block, images, lines, SweepOptions(), progress); });
-  ASSERT_EQ(a.size(), b.size());
-  for (size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].theta_deg, b[i].theta_deg);
-    EXPECT_EQ(a[i].similarity, b[i].similarity);
-    EXPECT_EQ(a[i].curvature, b[i].curvature);
-    EXPECT_EQ(a[i].reference_view, b[i].reference_view);
-    EXPECT_EQ(a[i].points, b[i].points);
-    EXPECT_EQ(a[i].accepted, b[i].accepted);
-    EXPECT_EQ(a[i].profile, b[i].profile);
-  }
+  ExpectSameSides(a, b);
 }
 
 TEST(SweepHalfPlanes, LinesAddedLaterGiveTheSameSidesAsASweepFromScratch) {
@@ -227,16 +234,9 @@ TEST(SweepHalfPlanes, LinesAddedLaterGiveTheSameSidesAsASweepFromScratch) {
   lines.push_back({Segment3{{-5, 1.5, z}, {5, 1.5, z}}, {}});
   const auto scratch = SweepHalfPlanes(block, images, lines, SweepOptions(), progress);
   const auto added = SweepHalfPlanes(block, images, lines, SweepOptions(), progress, &before);
-  ASSERT_EQ(scratch.size(), added.size());
   EXPECT_NE(scratch[0].extent_m, before[0].extent_m);
   EXPECT_NE(scratch[0].points_detected, before[0].points_detected);
-  for (size_t i = 0; i < scratch.size(); ++i) {
-    EXPECT_EQ(scratch[i].theta_deg, added[i].theta_deg);
-    EXPECT_EQ(scratch[i].similarity, added[i].similarity);
-    EXPECT_EQ(scratch[i].points_detected, added[i].points_detected);
-    EXPECT_EQ(scratch[i].candidate, added[i].candidate);
-    EXPECT_EQ(scratch[i].profile, added[i].profile);
-  }
+  ExpectSameSides(scratch, added);
 }
 
 TEST(SweepHalfPlanes, BadInputIsAnError) {
