@@ -292,10 +292,8 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
   return std::max(o.candidate_floor_similarity, o.candidate_min_similarity * scale);
 }
 
-std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
-                                       const std::vector<SweepLine>& lines,
-                                       const SweepOptions& options, Progress& progress,
-                                       const std::vector<HalfPlane>* previous) {
+std::vector<ViewTexture> PrepareViewTextures(const Block& block, const std::vector<cv::Mat>& images,
+                                             const SweepOptions& options) {
   const int n_views = static_cast<int>(block.views.size());
   if (static_cast<int>(images.size()) != n_views)
     throw Error("sweep: " + std::to_string(images.size()) + " images for " +
@@ -310,11 +308,29 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv:
                   std::to_string(im.cols) + "x" + std::to_string(im.rows) + ", camera '" + cam.id +
                   "' is " + std::to_string(cam.width) + "x" + std::to_string(cam.height));
   }
-  ReportOrCancel(progress, 0.0, "sweep: preparing views");
   std::vector<ViewTexture> textures(n_views);
   tbb::parallel_for(0, n_views,
                     [&](int v) { textures[v] = PrepareViewTexture(images[v], options); });
+  return textures;
+}
 
+std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                       const std::vector<SweepLine>& lines,
+                                       const SweepOptions& options, Progress& progress,
+                                       const std::vector<HalfPlane>* previous) {
+  ReportOrCancel(progress, 0.0, "sweep: preparing views");
+  return SweepHalfPlanes(block, PrepareViewTextures(block, images, options), lines, options,
+                         progress, previous);
+}
+
+std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<ViewTexture>& textures,
+                                       const std::vector<SweepLine>& lines,
+                                       const SweepOptions& options, Progress& progress,
+                                       const std::vector<HalfPlane>* previous) {
+  const int n_views = static_cast<int>(block.views.size());
+  if (static_cast<int>(textures.size()) != n_views)
+    throw Error("sweep: " + std::to_string(textures.size()) + " prepared views for " +
+                std::to_string(n_views) + " views of " + block.source);
   const int n_lines = static_cast<int>(lines.size());
   std::vector<std::vector<Projected>> projected(n_views, std::vector<Projected>(n_lines));
   tbb::parallel_for(0, n_views, [&](int v) {

@@ -9,6 +9,7 @@
 #include "algorithms/core/progress.h"
 #include "algorithms/geometry/block.h"
 #include "algorithms/geometry/segment3.h"
+#include "algorithms/sweep/points_of_interest.h"
 #include "algorithms/sweep/sweep_options.h"
 
 namespace roofsweep {
@@ -93,6 +94,19 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
 // sides unless an added line comes near their band in some view; the
 // result equals a sweep of all lines from scratch.
 std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<cv::Mat>& images,
+                                       const std::vector<SweepLine>& lines,
+                                       const SweepOptions& options, Progress& progress,
+                                       const std::vector<HalfPlane>* previous = nullptr);
+
+// What the sweep reads of every view, prepared once for several sweeps of
+// one block (`run` sweeps three times). Checks the images as
+// SweepHalfPlanes does.
+std::vector<ViewTexture> PrepareViewTextures(const Block& block, const std::vector<cv::Mat>& images,
+                                             const SweepOptions& options);
+
+// SweepHalfPlanes on views PrepareViewTextures prepared with the same
+// options.
+std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<ViewTexture>& textures,
                                        const std::vector<SweepLine>& lines,
                                        const SweepOptions& options, Progress& progress,
                                        const std::vector<HalfPlane>* previous = nullptr);

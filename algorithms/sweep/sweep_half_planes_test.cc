@@ -248,6 +248,12 @@ TEST(SweepHalfPlanes, BadInputIsAnError) {
   EXPECT_THROW(SweepHalfPlanes(block, images, {}, SweepOptions(), progress), Error);
   images.back() = cv::Mat(480, 640, CV_8UC3, cv::Scalar::all(128));
   EXPECT_THROW(SweepHalfPlanes(block, images, {}, SweepOptions(), progress), Error);
+  EXPECT_THROW(PrepareViewTextures(block, images, SweepOptions()), Error);
+  // Views prepared for another block.
+  images.back() = cv::Mat(480, 640, CV_32FC3, cv::Scalar::all(0.5));
+  std::vector<ViewTexture> textures = PrepareViewTextures(block, images, SweepOptions());
+  textures.pop_back();
+  EXPECT_THROW(SweepHalfPlanes(block, textures, {}, SweepOptions(), progress), Error);
 }
 
 TEST(SweepHalfPlanes, VerticalLineIsReportedNotSwept) {

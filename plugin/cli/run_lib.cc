@@ -369,12 +369,14 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     lines.push_back(std::move(s));
   }
   const bool two_passes = r.lift_lines && !r.stop_after_sweep;
+  // Prepared once: the second pass sweeps the same views twice more.
+  std::vector<ViewTexture> textures = PrepareViewTextures(block, images, r.sweep);
   auto sweep = [&](const std::vector<SweepLine>& swept, double from, double to,
                    const std::string& stage, const std::string& extra,
                    const std::vector<HalfPlane>* previous) {
     SubProgress sweep_progress(progress, from, to);
     std::vector<HalfPlane> h =
-        SweepHalfPlanes(block, images, swept, r.sweep, sweep_progress, previous);
+        SweepHalfPlanes(block, textures, swept, r.sweep, sweep_progress, previous);
     out.sides = static_cast<int>(h.size());
     out.accepted = 0;
     for (const HalfPlane& x : h) out.accepted += x.accepted;
@@ -470,8 +472,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<SweepLine> probe;
     for (const LiftedLine& l : lifts) probe.push_back(to_sweep(l));
     SubProgress probe_progress(progress, 0.62, 0.65);
-    const std::vector<LiftedLine> borders = KeepBorderLifts(
-        lifts, SweepHalfPlanes(block, images, probe, r.sweep, probe_progress), roof_planes, r.lift);
+    const std::vector<LiftedLine> borders =
+        KeepBorderLifts(lifts, SweepHalfPlanes(block, textures, probe, r.sweep, probe_progress),
+                        roof_planes, r.lift);
     for (const LiftedLine& l : borders) lines.push_back(to_sweep(l));
     out.stages.push_back({"segments lifted onto planes",
                           StrFormat("%zu lifted onto %zu planes, %zu of them border lines",
@@ -482,6 +485,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     hps = sweep(lines, 0.65, 0.95, "half-plane sweep (pass 2)",
                 StrFormat("%zu lines lifted", borders.size()), &hps);
   }
+
+  // The sweeps are done; what follows reads the images themselves.
+  std::vector<ViewTexture>().swap(textures);
 
   const std::string half_plane_path = r.stop_after_sweep ? r.output : r.half_planes;
   if (!half_plane_path.empty()) {
