@@ -6,7 +6,7 @@
 // (visibility from the renderer's depth map) and prints one table.
 //
 //   rs_edges_sim_eval [--preset realistic] [--seeds 1,2,3] [--size PX] [--strips N]
-//                     [--views N]
+//                     [--views N] [--methods max-tex,max-tex+2x,...]
 //
 // A plain program, not a test: it takes minutes, and its figures are
 // reported, not asserted.
@@ -101,7 +101,7 @@ void PrintCell(double pct) {
 int Main(int argc, char** argv) {
   std::vector<int> seeds = {1, 2, 3};
   int size = 0, strips = 0, views = 0;
-  std::string preset = "realistic";
+  std::string preset = "realistic", only;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if (a == "--seeds")
@@ -114,14 +114,30 @@ int Main(int argc, char** argv) {
       strips = std::atoi(v.c_str());
     else if (a == "--views")
       views = std::atoi(v.c_str());
+    else if (a == "--methods")
+      only = v;
     else {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;
     }
   }
   // "+2x": with the coarse-scale fusion (EdgeOptions::coarse_fusion).
-  const std::vector<std::string> methods = {"max",     "max-tex", "max+2x", "max-tex+2x",
-                                            "dizenzo", "grey",    "lsd"};
+  std::vector<std::string> methods = {"max",     "max-tex", "max+2x", "max-tex+2x",
+                                      "dizenzo", "grey",    "lsd"};
+  if (!only.empty()) {
+    const std::vector<std::string> known = methods;
+    methods.clear();
+    for (size_t from = 0; from <= only.size();) {
+      const size_t comma = std::min(only.find(',', from), only.size());
+      const std::string m = only.substr(from, comma - from);
+      if (std::find(known.begin(), known.end(), m) == known.end()) {
+        std::fprintf(stderr, "unknown method '%s' in --methods\n", m.c_str());
+        return 2;
+      }
+      methods.push_back(m);
+      from = comma + 1;
+    }
+  }
   std::map<std::string, Totals> totals;
   std::set<EdgeKind> seen_kinds;
   double isoluminant_buildings = 0, buildings = 0;

@@ -63,7 +63,9 @@ TEST(MatchLines, SimulatedBlockThreeSeeds) {
     EXPECT_GE(f.true_edges_all_m, f.true_edges_verified_m);
     EXPECT_GE(f.true_edges_verified_m, f.true_edges_unambiguous_m);
     EXPECT_GE(f.true_edges_unambiguous_m, f.true_edges_assigned_m);
-    if (f.true_assigned > 0) EXPECT_GT(f.true_edges_assigned_m, 0);
+    if (f.true_assigned > 0) {
+      EXPECT_GT(f.true_edges_assigned_m, 0);
+    }
     // Per true edge, the furthest stage agrees with the funnel's lengths; an
     // edge that every pair holding it sees along its epipolar lines, or that
     // fewer than two views hold, is never a candidate.
