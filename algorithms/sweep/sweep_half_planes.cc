@@ -331,6 +331,16 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<Vie
   if (static_cast<int>(textures.size()) != n_views)
     throw Error("sweep: " + std::to_string(textures.size()) + " prepared views for " +
                 std::to_string(n_views) + " views of " + block.source);
+  // The band points are read from these rasters by pixel: views prepared
+  // from other images would be read out of bounds.
+  for (int v = 0; v < n_views; ++v) {
+    const Camera& cam = block.CameraOf(block.views[v]);
+    const ViewTexture& t = textures[v];
+    if (t.grey.cols != cam.width || t.grey.rows != cam.height || t.poi.size() != t.grey.size())
+      throw Error("sweep: prepared view '" + block.views[v].name + "' is " +
+                  std::to_string(t.grey.cols) + "x" + std::to_string(t.grey.rows) + ", camera '" +
+                  cam.id + "' is " + std::to_string(cam.width) + "x" + std::to_string(cam.height));
+  }
   const int n_lines = static_cast<int>(lines.size());
   std::vector<std::vector<Projected>> projected(n_views, std::vector<Projected>(n_lines));
   tbb::parallel_for(0, n_views, [&](int v) {

@@ -252,6 +252,9 @@ TEST(SweepHalfPlanes, BadInputIsAnError) {
   // Views prepared for another block.
   images.back() = cv::Mat(480, 640, CV_32FC3, cv::Scalar::all(0.5));
   std::vector<ViewTexture> textures = PrepareViewTextures(block, images, SweepOptions());
+  textures.back() =
+      PrepareViewTexture(cv::Mat(100, 100, CV_32FC3, cv::Scalar::all(0.5)), SweepOptions());
+  EXPECT_THROW(SweepHalfPlanes(block, textures, {}, SweepOptions(), progress), Error);
   textures.pop_back();
   EXPECT_THROW(SweepHalfPlanes(block, textures, {}, SweepOptions(), progress), Error);
 }
