@@ -88,7 +88,11 @@ cv::Mat RenderView(const TestScene& scene, const Block& block, int view) {
           if (ray.direction.z() < 0) {
             best = (scene.ground_z - ray.origin.z()) / ray.direction.z();
             const Eigen::Vector3d X = ray.origin + best * ray.direction;
-            colour = Eigen::Vector3f::Constant(0.35f) + 0.25f * ground.At(X.x(), X.y());
+            colour = Eigen::Vector3f::Constant(0.35f) +
+                     0.25f * (scene.ground_stripes_m > 0
+                                  ? Eigen::Vector3f::Constant(static_cast<float>(
+                                        std::sin(2 * M_PI * X.x() / scene.ground_stripes_m)))
+                                  : ground.At(X.x(), X.y()));
           }
           for (size_t qi = 0; qi < scene.quads.size(); ++qi) {
             const Quad& q = scene.quads[qi];

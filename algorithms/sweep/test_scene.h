@@ -27,6 +27,9 @@ struct TestScene {
   std::vector<Quad> quads;
   double ground_z = 0;
   uint32_t ground_seed = 99;
+  // > 0: the ground is stripes across x of this wavelength (m; mowing
+  // stripes, parking bays), a texture that repeats along the x baselines.
+  double ground_stripes_m = 0;
   double noise_sigma = 0.004;  // per channel, [0, 1] units
 };
 

@@ -616,10 +616,58 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     } else if (o.verify_off_lines && !height_fails) {
       v.reason = OffLineRefusal(block, grey, grid, p, {c.x(), c.y(), zc}, v.score, o);
     }
+    // The trimmed patch first: the ground test weighs the evidence where
+    // the plane is seen, not the overshoot past its eaves, which is ground.
+    Ring2 trimmed;
+    if (v.reason.empty() && o.trim_patch) trimmed = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
+    if (v.reason.empty() && !height_fails && o.ground_alternative && block.ground.Known()) {
+      const double zg = block.ground.HeightAt(c.x(), c.y());
+      if (std::isfinite(zg) && zc - zg > 2 * v.offset_m) {
+        // The same image evidence on the ground: each sample inside the
+        // trimmed patch, moved along the ray of the view nearest in plan
+        // (ScorePlane's reference) down to the ground; not the ground
+        // below it, which other views see beside the roof.
+        std::vector<char> inside(samples.size(), 1);
+        if (trimmed.size() >= 3)
+          for (size_t k = 0; k < samples.size(); ++k)
+            inside[k] = InsideConvex(trimmed, samples[k].head<2>());
+        double plane_sum = 0;
+        int plane_n = 0;
+        for (const auto& [k, value] : at.values)
+          if (inside[k]) plane_sum += value, ++plane_n;
+        std::vector<Eigen::Vector3d> down;
+        for (size_t k = 0; k < samples.size(); ++k) {
+          if (!inside[k]) continue;
+          const Eigen::Vector3d X(samples[k].x(), samples[k].y(),
+                                  PlaneZ(p.plane, samples[k].x(), samples[k].y()));
+          const View* ref = nullptr;
+          double best = std::numeric_limits<double>::infinity();
+          for (const View& view : block.views) {
+            const double d = (view.pose.C - X).head<2>().norm();
+            if (d < best) best = d, ref = &view;
+          }
+          if (!ref || !(std::abs(X.z() - ref->pose.C.z()) > 1e-6)) continue;
+          const Eigen::Vector3d C = ref->pose.C;
+          down.push_back(C + (zg - C.z()) / (X.z() - C.z()) * (X - C));
+        }
+        const Scores g = ScorePlane(block, grey, down, Eigen::Vector4d(0, 0, 1, -zg), o);
+        if (plane_n > 0 && g.n > 0) {
+          const double plane_score = plane_sum / plane_n;
+          v.score_ground = g.sum / g.n;
+          if (plane_score < v.score_ground + o.ground_margin) {
+            std::snprintf(buf, sizeof buf,
+                          "the ground explains the images as well: score %.2f, %.2f on the ground "
+                          "%.1f m lower",
+                          plane_score, v.score_ground, zc - zg);
+            v.reason = buf;
+          }
+        }
+      }
+    }
     if (v.reason.empty()) {
       v.accepted = true;
       v.height_confirmed = !height_fails;
-      if (o.trim_patch) v.patch = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
+      v.patch = std::move(trimmed);
     }
   });
   return out;

@@ -317,5 +317,43 @@ TEST(VerifyPlanes, PlaneSpanningTwoLinesOverTheGroundIsRefused) {
   EXPECT_TRUE(a[0].accepted) << a[0].reason;
 }
 
+// Mowing stripes across x, 1 m apart. The x baselines (24 m) shift the
+// ground seen through a flat plane 19.8 m up by 24 * 19.8 / 80.2 = 5.92 m,
+// nearly six whole stripes, so the views agree there almost as well as on
+// the ground (measured 0.90 against 1.00), while the plane moved by the
+// height test's offset (half a stripe more shift) falls out of phase
+// (0.20): the height test alone passes it. The ground, known here,
+// explains the same image evidence better, and the plane is refused. A
+// true roof over that ground keeps its place: its texture, carried down
+// to the ground, decorrelates (0.22 against 0.99).
+TEST(VerifyPlanes, PlaneOverRepeatingGroundTextureIsRefusedWhenTheGroundExplainsIt) {
+  TestScene scene;
+  scene.ground_stripes_m = 1.0;
+  scene.quads = {Face(true)};
+  Block block = sweep_test::FourViewBlock();
+  block.ground.height = 0.0;
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  RoofPlaneHypothesis stripes;
+  stripes.plane << 0, 0, 1, -19.8;
+  stripes.patch = {{-14, -14}, {-7, -14}, {-7, -8}, {-14, -8}};  // away from the face
+  const RoofPlaneHypothesis roof = Hypothesis(Face(true));
+  NullProgress progress;
+  const auto v = VerifyPlanes(block, images, {stripes, roof}, VerifyOptions(), progress);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_FALSE(v[0].accepted);
+  EXPECT_EQ(v[0].reason.rfind("the ground explains the images as well", 0), 0u) << v[0].reason;
+  EXPECT_GE(v[0].score_ground, v[0].score - VerifyOptions{}.ground_margin);
+  EXPECT_TRUE(v[1].accepted) << v[1].reason;
+  ASSERT_TRUE(std::isfinite(v[1].score_ground));
+  EXPECT_LT(v[1].score_ground, v[1].score - 0.5);  // measured: 0.22 against 0.99
+  // Without the ground as an alternative the stripes pass every other test.
+  VerifyOptions no_ground;
+  no_ground.ground_alternative = false;
+  const auto w = VerifyPlanes(block, images, {stripes}, no_ground, progress);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_TRUE(w[0].accepted) << w[0].reason;
+  EXPECT_TRUE(std::isnan(w[0].score_ground));
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -166,6 +166,9 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
       f.reals["tilt_difference"] = t.check.tilt_difference;
       f.reals["tilt_se"] = t.check.tilt_se;
       f.reals["offset_m"] = t.check.offset_m;
+      // The horizontal plane at the ground over the same image evidence
+      // (VerifyOptions::ground_alternative); absent where not tested.
+      if (std::isfinite(t.check.score_ground)) f.reals["score_ground"] = t.check.score_ground;
     }
     features.push_back(std::move(f));
   }
