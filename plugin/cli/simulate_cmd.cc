@@ -34,8 +34,13 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
       .Option("-jpeg_quality", &r.jpeg_quality, "Q", "JPEG quality (92)")
       .Option("-strips", &r.strips, "N", "number of flight strips (preset)")
       .Option("-views|--views", &r.images_per_strip, "N", "images per strip (preset)")
-      .Option("-size", &r.image_size, "PX", "square image size in pixels (preset)")
-      .Option("-gsd", &r.gsd, "M", "ground sample distance in metres (preset)")
+      .Option("-size", &r.image_size, "PX",
+              "square image size in pixels (preset); the lens stays, so fewer pixels at one -gsd "
+              "cover less ground from the same height, with shorter baselines (a smaller "
+              "base-to-height ratio)")
+      .Option("-gsd", &r.gsd, "M",
+              "ground sample distance in metres (preset); the flying height follows it (GSD x "
+              "focal length in pixels)")
       .Option("-buildings", &r.buildings, "N", "number of generated buildings (preset)")
       .Flag("-obliques", &r.obliques, "add oblique views (forward, backward, left, right)")
       .Flag("-overwrite", &r.overwrite, "replace an existing output folder")
