@@ -323,6 +323,33 @@ SampleGrid PatchSamples(const Ring2& patch, const VerifyOptions& o) {
   return g;
 }
 
+// The samples marked `inside`, lifted onto `plane` and carried along the
+// ray of the view whose centre is nearest in plan (ScorePlane's reference
+// rule, without its visibility test) down to the height zg: the same
+// reference windows on the ground, not the ground below the plane, which
+// other views see beside a roof.
+std::vector<Eigen::Vector3d> SamplesOnTheGround(const Block& block,
+                                                const std::vector<Eigen::Vector3d>& samples,
+                                                const std::vector<char>& inside,
+                                                const Eigen::Vector4d& plane, double zg) {
+  std::vector<Eigen::Vector3d> down;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    if (!inside[k]) continue;
+    const Eigen::Vector3d X(samples[k].x(), samples[k].y(),
+                            PlaneZ(plane, samples[k].x(), samples[k].y()));
+    const View* ref = nullptr;
+    double best = std::numeric_limits<double>::infinity();
+    for (const View& view : block.views) {
+      const double d = (view.pose.C - X).head<2>().norm();
+      if (d < best) best = d, ref = &view;
+    }
+    if (!ref || !(std::abs(X.z() - ref->pose.C.z()) > 1e-6)) continue;
+    const Eigen::Vector3d C = ref->pose.C;
+    down.push_back(C + (zg - C.z()) / (X.z() - C.z()) * (X - C));
+  }
+  return down;
+}
+
 // The patch cut back to where the images do not refute the plane (see
 // VerifyOptions::trim_patch); empty when nothing is cut. Each sample votes
 // with its neighbours within trim_vote_radius_m: Cor+ below
@@ -623,10 +650,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     if (v.reason.empty() && !height_fails && o.ground_alternative && block.ground.Known()) {
       const double zg = block.ground.HeightAt(c.x(), c.y());
       if (std::isfinite(zg) && zc - zg > 2 * v.offset_m) {
-        // The same image evidence on the ground: each sample inside the
-        // trimmed patch, moved along the ray of the view nearest in plan
-        // (ScorePlane's reference) down to the ground; not the ground
-        // below it, which other views see beside the roof.
+        // The same image evidence on the ground: the samples inside the
+        // trimmed patch (SamplesOnTheGround).
         std::vector<char> inside(samples.size(), 1);
         if (trimmed.size() >= 3)
           for (size_t k = 0; k < samples.size(); ++k)
@@ -635,21 +660,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
         int plane_n = 0;
         for (const auto& [k, value] : at.values)
           if (inside[k]) plane_sum += value, ++plane_n;
-        std::vector<Eigen::Vector3d> down;
-        for (size_t k = 0; k < samples.size(); ++k) {
-          if (!inside[k]) continue;
-          const Eigen::Vector3d X(samples[k].x(), samples[k].y(),
-                                  PlaneZ(p.plane, samples[k].x(), samples[k].y()));
-          const View* ref = nullptr;
-          double best = std::numeric_limits<double>::infinity();
-          for (const View& view : block.views) {
-            const double d = (view.pose.C - X).head<2>().norm();
-            if (d < best) best = d, ref = &view;
-          }
-          if (!ref || !(std::abs(X.z() - ref->pose.C.z()) > 1e-6)) continue;
-          const Eigen::Vector3d C = ref->pose.C;
-          down.push_back(C + (zg - C.z()) / (X.z() - C.z()) * (X - C));
-        }
+        const std::vector<Eigen::Vector3d> down =
+            SamplesOnTheGround(block, samples, inside, p.plane, zg);
         const Scores g = ScorePlane(block, grey, down, Eigen::Vector4d(0, 0, 1, -zg), o);
         if (plane_n > 0 && g.n > 0) {
           const double plane_score = plane_sum / plane_n;
