@@ -1,6 +1,7 @@
 #include "algorithms/eval/match_eval.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -26,6 +27,31 @@ int Label(const Segment2D& s, const Segments2D& annotated, const MatchEvalOption
     }
   }
   return best;
+}
+
+// Whether the annotated 3D lines of rows r and q project onto each other in
+// view v: each one's projected endpoints within `tolerance` px of the other's
+// projected (infinite) line.
+bool RowsCoincideInView(const LineTracks& truth, int r, int q, int v, double tolerance) {
+  const int n = static_cast<int>(truth.lines3d.size());
+  if (!truth.project || r >= n || q >= n) return false;
+  Eigen::Vector2d p[2][2];
+  for (int k = 0; k < 2; ++k) {
+    const Segment3& l = truth.lines3d[k == 0 ? r : q];
+    const auto a = truth.project(v, l.a), b = truth.project(v, l.b);
+    if (!a || !b || !((*b - *a).norm() > 1e-9)) return false;
+    p[k][0] = *a;
+    p[k][1] = *b;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector2d& a = p[1 - k][0];
+    const Eigen::Vector2d d = (p[1 - k][1] - a).normalized();
+    for (const Eigen::Vector2d& x : p[k]) {
+      const Eigen::Vector2d w = x - a;
+      if (std::abs(w.x() * d.y() - w.y() * d.x()) > tolerance) return false;
+    }
+  }
+  return true;
 }
 
 double DistanceToLine(const Eigen::Vector3d& p, const Segment3& l) {
@@ -91,7 +117,19 @@ MatchScores EvaluateMatches(const std::vector<Segments2D>& detected,
         any = true;
         const int r = common_row(va, la, vb, lb);
         if (r < 0) {
-          all = false;
+          int pieces_of = -1;
+          for (int ra : rows_of.count({va, la}) ? rows_of.at({va, la}) : std::vector<int>{})
+            for (int rb : rows_of.count({vb, lb}) ? rows_of.at({vb, lb}) : std::vector<int>{})
+              if (pieces_of < 0 && RowsCoincideInView(truth, ra, rb, va, o.max_distance_px) &&
+                  RowsCoincideInView(truth, ra, rb, vb, o.max_distance_px))
+                pieces_of = ra;
+          if (pieces_of < 0) {
+            all = false;
+            continue;
+          }
+          ++out.pairs_collinear_rows;
+          ++out.pairs_correct;
+          ++row_votes[pieces_of];
           continue;
         }
         ++out.pairs_correct;

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -15,6 +18,11 @@ struct LineTracks {
   std::vector<Segments2D> lines;       // per view, pixel-corner coordinates
   std::vector<std::vector<int>> rows;  // per 3D line: id per view, -1 none
   std::vector<Segment3> lines3d;       // per row, when known (same frame as the result)
+  // Point of that frame to pixel (pixel-corner coordinates) in a view, when
+  // the cameras are known; empty behind the camera. With it and lines3d, two
+  // rows whose lines coincide in both views of a pair count as one line there
+  // (MatchScores::pairs_collinear_rows).
+  std::function<std::optional<Eigen::Vector2d>(int view, const Eigen::Vector3d&)> project;
 };
 
 struct MatchEvalOptions {
@@ -31,6 +39,15 @@ struct MatchScores {
   // annotation has a say: both segments are images of annotated lines, and
   // one of them is marked in the other's view.
   long long pairs_evaluable = 0, pairs_correct = 0;
+  // Of the correct pairs, those whose two segments are marked in different
+  // rows whose annotated 3D lines project onto each other (within
+  // max_distance_px) in both views of the pair. Each segment then images
+  // both rows' lines, so the pair is a correct match of either. Mostly the
+  // annotation splits an edge into collinear pieces (the upper and lower
+  // part of a wall corner, Merton I) and marks each in a row of its own; a
+  // segment that spans both takes one piece's label in one view and the
+  // other's in the next. Not counted as annotated pairs found (recall).
+  long long pairs_collinear_rows = 0;
   // Result lines with at least one evaluable pair, and those whose
   // evaluable pairs are all correct.
   int lines_evaluable = 0, lines_correct = 0;

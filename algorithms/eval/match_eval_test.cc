@@ -54,5 +54,39 @@ TEST(EvaluateMatches, ASegmentFarFromEveryAnnotatedLineIsNotJudged) {
   EXPECT_EQ(s.annotated_pairs_found, 0);
 }
 
+// One edge annotated as two collinear pieces (rows 0 and 1), and a parallel
+// edge (row 2) 0.3 m beside it, in two views of a camera that maps (x, y, z)
+// to 10 (x + view, y) px.
+LineTracks Pieces(bool with_cameras) {
+  LineTracks t;
+  t.lines = {{Seg(0, 0, 50, 0), Seg(50, 0, 100, 0), Seg(0, 3, 100, 3)},
+             {Seg(10, 0, 60, 0), Seg(60, 0, 110, 0), Seg(10, 3, 110, 3)}};
+  t.rows = {{0, 0}, {1, 1}, {2, 2}};
+  t.lines3d = {{{0, 0, 0}, {5, 0, 0}}, {{5, 0, 0}, {10, 0, 0}}, {{0, 0.3, 0}, {10, 0.3, 0}}};
+  if (with_cameras)
+    t.project = [](int v, const Eigen::Vector3d& p) -> std::optional<Eigen::Vector2d> {
+      return Eigen::Vector2d(10 * (p.x() + v), 10 * p.y());
+    };
+  return t;
+}
+
+TEST(EvaluateMatches, CollinearPiecesOfOneEdgeAreOneLineWhenTheCamerasAreKnown) {
+  // Line 0 spans the edge: mostly the first piece in view 0, the second in
+  // view 1. Line 1 takes the parallel edge in view 1: a mismatch.
+  const std::vector<Segments2D> detected = {{Seg(0, 0, 60, 0), Seg(0, 0.2, 100, 0.2)},
+                                            {Seg(50, 0, 110, 0), Seg(10, 3, 110, 3)}};
+  const std::vector<std::vector<std::pair<int, int>>> obs = {{{0, 0}, {1, 0}}, {{0, 1}, {1, 1}}};
+  const MatchScores blind = EvaluateMatches(detected, obs, {}, Pieces(false));
+  EXPECT_EQ(blind.pairs_evaluable, 2);
+  EXPECT_EQ(blind.pairs_correct, 0);
+  EXPECT_EQ(blind.pairs_collinear_rows, 0);
+  const MatchScores s = EvaluateMatches(detected, obs, {}, Pieces(true));
+  EXPECT_EQ(s.pairs_evaluable, 2);
+  EXPECT_EQ(s.pairs_correct, 1);
+  EXPECT_EQ(s.pairs_collinear_rows, 1);
+  EXPECT_EQ(s.lines_correct, 1);
+  EXPECT_EQ(s.annotated_pairs_found, 0);  // recall counts a row's own pairs only
+}
+
 }  // namespace
 }  // namespace roofsweep::eval

@@ -10,6 +10,7 @@
 
 #include "algorithms/core/error.h"
 #include "algorithms/eval/line_eval.h"
+#include "algorithms/geometry/view.h"
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
@@ -58,6 +59,10 @@ eval::MatchScores ScoreAgainstVgg(const orientation::VggLineAnnotations& a, cons
     t.rows.push_back(std::move(mine));
   }
   t.lines3d = a.lines3d;
+  t.project = [&block, &frame](int v, const Eigen::Vector3d& crs) {
+    const View& view = block.views[v];
+    return Project(block.CameraOf(view), view.pose, frame.ToLocal(crs));
+  };
   std::vector<std::vector<std::pair<int, int>>> observations;
   std::vector<Segment3> lines;
   for (const Line3D& l : result.lines) {
@@ -209,11 +214,12 @@ std::string FormatMatchSummary(const MatchSummary& s) {
     auto pct = [](double a, double b) { return b > 0 ? 100.0 * a / b : 0.0; };
     std::snprintf(buf, sizeof buf,
                   "Against the annotated correspondences (2 px, 5 deg):\n"
-                  "  match precision %.1f%% (%lld of %lld judged pairs; lines: %d of %d)\n"
+                  "  match precision %.1f%% (%lld of %lld judged pairs, %lld of them between two "
+                  "annotated rows that coincide in both views; lines: %d of %d)\n"
                   "  recall %.1f%% of annotated pairs (%lld of %lld), %.1f%% of annotated lines "
                   "(%d of %d)\n",
                   pct(m.pairs_correct, m.pairs_evaluable), m.pairs_correct, m.pairs_evaluable,
-                  m.lines_correct, m.lines_evaluable,
+                  m.pairs_collinear_rows, m.lines_correct, m.lines_evaluable,
                   pct(m.annotated_pairs_found, m.annotated_pairs), m.annotated_pairs_found,
                   m.annotated_pairs, pct(m.annotated_lines_found, m.annotated_lines),
                   m.annotated_lines_found, m.annotated_lines);
