@@ -97,6 +97,38 @@ double Building::RoofTopZ() const {
   return std::isinf(z) ? std::numeric_limits<double>::quiet_NaN() : z;
 }
 
+std::optional<Eigen::Vector2d> Building::PlanCentroid() const {
+  // Shoelace moments of each ring in plan. A ground polygon faces down, so
+  // its exterior runs clockwise in plan and its holes anticlockwise: the
+  // exterior's sign turns each polygon's sum positive, holes included.
+  double area = 0;
+  Eigen::Vector2d moment = Eigen::Vector2d::Zero();
+  auto ring_sums = [](const std::vector<Eigen::Vector3d>& ring, double* a, Eigen::Vector2d* m) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Eigen::Vector3d& p = ring[i];
+      const Eigen::Vector3d& q = ring[(i + 1) % ring.size()];
+      const double cross = p.x() * q.y() - q.x() * p.y();
+      *a += 0.5 * cross;
+      *m += cross * Eigen::Vector2d(p.x() + q.x(), p.y() + q.y()) / 6.0;
+    }
+  };
+  for (const Building* b : Solids())
+    for (const auto& s : b->surfaces) {
+      if (s.type != SurfaceType::kGround) continue;
+      for (const auto& poly : s.polygons) {
+        double a = 0;
+        Eigen::Vector2d m = Eigen::Vector2d::Zero();
+        ring_sums(poly.exterior, &a, &m);
+        const double sign = a < 0 ? -1.0 : 1.0;
+        for (const auto& h : poly.holes) ring_sums(h, &a, &m);
+        area += sign * a;
+        moment += sign * m;
+      }
+    }
+  if (!(area > 1e-12)) return std::nullopt;
+  return Eigen::Vector2d(moment / area);
+}
+
 std::vector<const Building*> Building::Solids() const {
   std::vector<const Building*> out;
   if (!surfaces.empty()) out.push_back(this);

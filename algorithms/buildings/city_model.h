@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -75,6 +76,10 @@ struct Building {
   // are none).
   double GroundZ() const;
   double RoofTopZ() const;
+  // Plan (x, y) centroid of the ground surfaces, over the parts too, area
+  // weighted; empty when there is no ground surface of positive area. The
+  // point that decides which tile of a tiled run a building belongs to.
+  std::optional<Eigen::Vector2d> PlanCentroid() const;
   // The objects that carry geometry: this building when it has surfaces,
   // then its parts (depth first). What solid checks and counts go over.
   std::vector<const Building*> Solids() const;

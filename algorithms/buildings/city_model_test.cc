@@ -26,5 +26,27 @@ TEST(Building, GroundAndRoofHeights) {
   EXPECT_STREQ(RoofTypeName(roof_type::kGabled), "gabled");
 }
 
+TEST(Building, PlanCentroidOfTheGroundSurfacesOverAllParts) {
+  // Two parts: a 4 x 2 ground at x 0..4 and a 2 x 2 one at x 4..6 with a
+  // 1 x 1 courtyard; their rings face down (clockwise in plan), as the
+  // assembly writes them.
+  Building a, b;
+  Surface ga{SurfaceType::kGround, "", {}};
+  ga.polygons.push_back({{{0, 0, 0}, {0, 2, 0}, {4, 2, 0}, {4, 0, 0}}, {}});
+  a.surfaces = {ga};
+  Surface gb{SurfaceType::kGround, "", {}};
+  gb.polygons.push_back({{{4, 0, 0}, {4, 2, 0}, {6, 2, 0}, {6, 0, 0}},
+                         {{{5, 0.5, 0}, {5.5, 0.5, 0}, {5.5, 1.5, 0}, {5, 1.5, 0}}}});
+  b.surfaces = {gb};
+  Building whole;
+  whole.parts = {a, b};
+  const auto c = whole.PlanCentroid();
+  ASSERT_TRUE(c.has_value());
+  // Areas 8 (centre x 2), 4 (x 5) less 0.5 (x 5.25): x = (16 + 20 - 2.625) / 11.5.
+  EXPECT_NEAR(c->x(), (16 + 20 - 2.625) / 11.5, 1e-12);
+  EXPECT_NEAR(c->y(), 1.0, 1e-12);
+  EXPECT_FALSE(Building().PlanCentroid().has_value());
+}
+
 }  // namespace
 }  // namespace roofsweep

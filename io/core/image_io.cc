@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "algorithms/core/error.h"
+#include "algorithms/core/format.h"
 #include "io/core/gdal_util.h"
 
 namespace fs = std::filesystem;
@@ -86,7 +87,7 @@ double FullScale(GDALRasterBand* band) {
               errors.Message("GDAL could not read the pixels") + ")");
 }
 
-cv::Mat ReadPalette(const std::string& path, GDALRasterBand* band,
+cv::Mat ReadPalette(const std::string& path, GDALRasterBand* band, const cv::Rect& window,
                     const gdal::ErrorCapture& errors) {
   const GDALColorTable* table = band->GetColorTable();
   const GDALPaletteInterp interp = table->GetPaletteInterpretation();
@@ -94,10 +95,11 @@ cv::Mat ReadPalette(const std::string& path, GDALRasterBand* band,
     throw Error(path + ": palette type " + GDALGetPaletteInterpretationName(interp) +
                 " is not supported (only RGB and grey palettes)");
   }
-  const int w = band->GetXSize();
-  const int h = band->GetYSize();
+  const int w = window.width;
+  const int h = window.height;
   cv::Mat index(h, w, CV_32SC1);
-  if (band->RasterIO(GF_Read, 0, 0, w, h, index.data, w, h, GDT_Int32, 0, 0) != CE_None ||
+  if (band->RasterIO(GF_Read, window.x, window.y, w, h, index.data, w, h, GDT_Int32, 0, 0) !=
+          CE_None ||
       errors.HasFailure()) {
     ThrowReadError(path, errors);
   }
@@ -174,32 +176,40 @@ void CheckImageReadable(const std::string& path) {
   }
 }
 
-cv::Mat ReadImage(const std::string& path) {
+cv::Mat ReadImage(const std::string& path) { return ReadImage(path, cv::Rect()); }
+
+cv::Mat ReadImage(const std::string& path, const cv::Rect& requested) {
   gdal::ErrorCapture errors;
   // libjpeg reports a truncated stream as a warning and GDAL then returns
   // grey pixels with CE_None; roofsweep must not measure on invented data.
   gdal::ScopedThreadConfig strict_jpeg("GDAL_ERROR_ON_LIBJPEG_WARNING", "TRUE");
   DatasetPtr ds = OpenRaster(path, errors);
   const ImageInfo info = InfoOf(path, ds.get());
+  const cv::Rect full(0, 0, info.width, info.height);
+  const cv::Rect window = requested.empty() ? full : requested;
+  if ((window & full) != window)
+    throw Error(path + StrFormat(": window %dx%d at (%d, %d) lies outside the %dx%d image",
+                                 window.width, window.height, window.x, window.y, info.width,
+                                 info.height));
   GDALRasterBand* first = ds->GetRasterBand(1);
   if (first->GetColorInterpretation() == GCI_PaletteIndex && first->GetColorTable()) {
-    return ReadPalette(path, first, errors);
+    return ReadPalette(path, first, window, errors);
   }
 
   const int channels = info.bands >= 3 ? 3 : 1;
-  cv::Mat out(info.height, info.width, channels == 3 ? CV_32FC3 : CV_32FC1);
+  cv::Mat out(window.height, window.width, channels == 3 ? CV_32FC3 : CV_32FC1);
   int band_map[3] = {1, 2, 3};
   const GSpacing pixel = static_cast<GSpacing>(sizeof(float)) * channels;
-  const CPLErr err =
-      ds->RasterIO(GF_Read, 0, 0, info.width, info.height, out.data, info.width, info.height,
-                   GDT_Float32, channels, band_map, pixel, static_cast<GSpacing>(out.step[0]),
-                   static_cast<GSpacing>(sizeof(float)), nullptr);
+  const CPLErr err = ds->RasterIO(GF_Read, window.x, window.y, window.width, window.height,
+                                  out.data, window.width, window.height, GDT_Float32, channels,
+                                  band_map, pixel, static_cast<GSpacing>(out.step[0]),
+                                  static_cast<GSpacing>(sizeof(float)), nullptr);
   if (err != CE_None || errors.HasFailure()) ThrowReadError(path, errors);
 
-  const double full = FullScale(first);
-  if (full > 0) {
+  const double full_scale = FullScale(first);
+  if (full_scale > 0) {
     // Clamp too: NBITS may understate what a sloppy writer stored.
-    out.convertTo(out, out.type(), 1.0 / full);
+    out.convertTo(out, out.type(), 1.0 / full_scale);
     cv::min(cv::max(out, 0.0), 1.0, out);
   }
   return out;

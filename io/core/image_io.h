@@ -31,6 +31,12 @@ void CheckImageReadable(const std::string& path);
 // images smaller than 2x2 pixels.
 cv::Mat ReadImage(const std::string& path);
 
+// The same for a window of the image (pixel rows window.y .. y + height - 1
+// of columns window.x .. x + width - 1); only that part is decoded where the
+// format allows (tiled or striped TIFF). An empty window reads the whole
+// image. Throws when the window is not inside the image.
+cv::Mat ReadImage(const std::string& path, const cv::Rect& window);
+
 // Writes an 8-bit RGB (CV_8UC3, R, G, B order) or grey image through GDAL;
 // the format follows the extension (.tif GeoTIFF tiled/deflate, .jpg JPEG
 // quality `jpeg_quality`, .png PNG). Atomic: temporary name + rename.

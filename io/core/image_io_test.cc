@@ -68,6 +68,16 @@ void WriteWithGdal(const std::string& path, int w, int h, int bands, GDALDataTyp
   GDALClose(ds);
 }
 
+// A 6 x 4 palette image: red in the even columns, teal in the odd ones.
+void WriteRedTealPalette(const std::string& path) {
+  GDALColorTable table(GPI_RGB);
+  const GDALColorEntry red{255, 0, 0, 255}, teal{0, 128, 128, 255};
+  table.SetColorEntry(0, &red);
+  table.SetColorEntry(1, &teal);
+  WriteWithGdal(
+      path, 6, 4, 1, GDT_Byte, {}, [](int, int, int c) { return c % 2; }, &table);
+}
+
 TEST(ImageIo, PngRoundTripKeepsRgbOrderAndScale) {
   const std::string dir = testing::TempDir();
   const std::string path = dir + "/card.png";
@@ -115,6 +125,35 @@ TEST(ImageIo, TiledDeflateTiffRoundTripLeavesNothingElse) {
   img.convertTo(back, CV_8UC3, 255.0);
   EXPECT_EQ(cv::norm(back, card, cv::NORM_INF), 0.0);
   EXPECT_EQ(Listing(dir), std::vector<std::string>{"card.tif"});
+}
+
+TEST(ImageIo, AWindowIsThatPartOfTheImage) {
+  const std::string dir = testing::TempDir();
+  const std::string path = dir + "/window.tif";
+  const cv::Mat card = Card8(300, 260);
+  WriteImage(path, card);
+  const cv::Mat whole = ReadImage(path);
+  // Across a tile border (256 px), and the whole image for an empty window.
+  const cv::Rect w(200, 240, 90, 17);
+  const cv::Mat part = ReadImage(path, w);
+  ASSERT_EQ(part.size(), w.size());
+  EXPECT_EQ(cv::norm(part, whole(w), cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(ReadImage(path, cv::Rect()), whole, cv::NORM_INF), 0.0);
+  for (const cv::Rect& outside : {cv::Rect(250, 0, 51, 10), cv::Rect(-1, 0, 5, 5)}) {
+    try {
+      ReadImage(path, outside);
+      ADD_FAILURE() << "a window beyond the image was read";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("window.tif: window"), std::string::npos) << e.what();
+    }
+  }
+  // A palette image windowed too.
+  const std::string pal = dir + "/window_pal.tif";
+  WriteRedTealPalette(pal);
+  const cv::Mat p = ReadImage(pal, cv::Rect(3, 1, 2, 2));
+  ASSERT_EQ(p.size(), cv::Size(2, 2));
+  EXPECT_NEAR(cv::norm(p.at<cv::Vec3f>(0, 0) - cv::Vec3f(0, 128 / 255.0f, 128 / 255.0f)), 0, 1e-7);
+  EXPECT_NEAR(cv::norm(p.at<cv::Vec3f>(1, 1) - cv::Vec3f(1, 0, 0)), 0, 1e-7);
 }
 
 TEST(ImageIo, JpegQualityIsUsed) {
@@ -180,12 +219,7 @@ TEST(ImageIo, TwelveBitIsScaledByNbits) {
 
 TEST(ImageIo, PaletteIsExpanded) {
   const std::string path = testing::TempDir() + "/pal.tif";
-  GDALColorTable table(GPI_RGB);
-  const GDALColorEntry red{255, 0, 0, 255}, teal{0, 128, 128, 255};
-  table.SetColorEntry(0, &red);
-  table.SetColorEntry(1, &teal);
-  WriteWithGdal(
-      path, 6, 4, 1, GDT_Byte, {}, [](int, int, int c) { return c % 2; }, &table);
+  WriteRedTealPalette(path);
   const cv::Mat img = ReadImage(path);
   ASSERT_EQ(img.type(), CV_32FC3);
   const cv::Vec3f red_px = img.at<cv::Vec3f>(2, 0), teal_px = img.at<cv::Vec3f>(2, 1);

@@ -34,21 +34,31 @@ int Convert(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.write.overwrite, "replace an existing output file")
       .Flag("-update", &r.write.update,
             "GeoPackage: add or replace roofsweep's layers in an existing file, keep the others")
+      .Flag("-append", &r.append,
+            "add the input's buildings to those of an existing OUT (same CRS, no id in both): "
+            "gathers the outputs of a tiled run; without OUT a plain write")
       .Flag("-allow_empty", &r.allow_empty, "write a model that has no buildings")
       .Flag("-no_check", &no_check, "do not run the solid checks (roofsweep_validity attribute)")
       .Example("roofsweep convert buildings.gml buildings.city.json")
       .Example("roofsweep convert buildings.city.json city.gpkg -update")
-      .Example("roofsweep convert buildings.gml buildings_wgs84.city.json -t_srs EPSG:4979");
+      .Example("roofsweep convert buildings.gml buildings_wgs84.city.json -t_srs EPSG:4979")
+      .Example("for t in tiles/*.gml; do roofsweep convert $t city.gml -append; done");
   if (!p.Parse(args)) return 0;
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
   RequireCityModelFormat(p, r.output, r.write.format);
-  RequireNewOutput(p, r.output, r.write.overwrite || r.write.update);
+  if (r.append && (r.write.overwrite || r.write.update))
+    throw UsageError("Option -append excludes -overwrite and -update", p.Synopsis());
+  RequireNewOutput(p, r.output, r.write.overwrite || r.write.update || r.append);
   r.write.check_geometry = !no_check;
   const ConvertSummary s = RunConvert(r, *ctx.progress);
   if (!ctx.quiet) {
-    std::cout << "Wrote " << r.output << " (" << s.format << "): " << s.buildings << " buildings, "
-              << s.surfaces << " surfaces";
+    std::cout << "Wrote " << r.output << " (" << s.format << "): " << s.buildings << " buildings";
+    if (s.appended_to)
+      std::cout << " (" << s.appended_to << " there before, " << s.buildings - s.appended_to
+                << " added with " << s.surfaces << " surfaces)";
+    else
+      std::cout << ", " << s.surfaces << " surfaces";
     if (s.invalid_buildings)
       std::cout << ", " << s.invalid_buildings << " failing the solid checks";
     std::cout << "\n";

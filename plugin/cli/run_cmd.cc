@@ -4,6 +4,7 @@
 #include "plugin/cli/command.h"
 #include "plugin/cli/match_flags.h"
 #include "plugin/cli/run_lib.h"
+#include "plugin/cli/usage_checks.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -34,6 +35,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
        no_lift = false;
   bool keep_eave_planes = false;
+  std::string aoi;
   ArgParser p("run",
               "Reconstructs LoD2 buildings from an oriented block: colour segments, 3D lines, "
               "half-plane sweep, grouping into roof planes, conflict management and closed "
@@ -44,6 +46,14 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-of|-f", &r.format, "FORMAT", "CityGML, CityJSON, CityJSONSeq or a GDAL driver")
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
       .Option("-t_srs", &r.target_crs, "SRS", "reproject the LoD2 output to SRS (PROJ)")
+      .Option("-aoi", &aoi, "MINX,MINY,MAXX,MAXY",
+              "one tile of a tiled run, in the block CRS (default: the block's aoi, if any): "
+              "read only the views and image windows that see it and its buffer, and write only "
+              "the buildings whose ground centre lies in it (min <= x < max), ids prefixed with "
+              "t<MINX>_<MINY>_; the tiles of a grid then hold every building once")
+      .Option("-tile_buffer", &r.tile_buffer_m, "M",
+              "reconstruct this far around the tile, so that its buildings that cross the "
+              "border come out whole (default 30)")
       .Option("-lines", &r.lines_in, "FILE",
               "start from these 3D lines (OGR line layer or segments JSON) instead of matching; "
               "lines in another CRS are reprojected to the block's")
@@ -102,8 +112,12 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite")
-      .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg");
+      .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg")
+      .Example("roofsweep run city/block.json -aoi 391800,5819000,392000,5819200 -o t.gml");
   if (!p.Parse(args)) return 0;
+  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
+  if (!(r.tile_buffer_m >= 0))
+    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
   if (!(r.min_edge_support >= 0 && r.min_edge_support <= 1))
     throw UsageError("Option -min_edge_support expects a share from 0 to 1", p.Synopsis());
   r.line_planes = !sweep_only;

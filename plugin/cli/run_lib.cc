@@ -33,6 +33,7 @@
 #include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
 #include "plugin/cli/match_lib.h"
+#include "plugin/cli/tile_lib.h"
 
 namespace roofsweep {
 namespace {
@@ -250,11 +251,18 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   RunSummary out;
 
   auto t0 = Clock::now();
-  const BlockManifest manifest = OpenBlockManifest(r.block);
-  const Block block = ManifestToBlock(manifest);
+  BlockManifest manifest = OpenBlockManifest(r.block);
+  if (r.aoi) manifest.aoi = r.aoi;
+  Block block = ManifestToBlock(manifest);
   const LocalFrame frame = ManifestLocalFrame(manifest);
   if (!block.ground.Known() && !r.stop_after_sweep)
     throw Error(r.block + ": the block has no ground height or DTM; walls need one");
+  if (!(r.tile_buffer_m >= 0)) throw Error("run: the tile buffer must be 0 m or more");
+  std::optional<TileCut> tile;
+  if (block.aoi) {
+    tile = CutBlockToTile(&block, r.tile_buffer_m, r.block);
+    out.messages.push_back(tile->message);
+  }
   if (const auto w = SurfaceModelWarning(block.ground))
     out.messages.push_back(manifest.dtm + ": " + *w);
   // Footprints are read first: a wrong file or CRS should fail in seconds,
@@ -266,16 +274,36 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     fo.layer = r.footprints.empty() ? block.footprints_layer : r.footprints_layer;
     fo.id_field = r.footprints_id_field;
     fo.block_crs = manifest.crs;
-    fo.extent = BlockExtent(block);
+    fo.extent = tile ? std::optional<Eigen::Vector4d>(tile->region) : BlockExtent(block);
     footprints = ReadFootprints(footprint_path, frame, fo, &out.messages);
+    if (footprints.empty() && tile) {
+      // A tile of parkland: the footprints say there is nothing to build.
+      out.messages.push_back(footprint_path + ": no footprint in the tile or its buffer");
+      CityModel empty;
+      empty.crs = r.target_crs.empty() ? manifest.crs : r.target_crs;
+      WriteOptions wo;
+      wo.format = r.format;
+      wo.overwrite = r.overwrite;
+      WriteCityModel(empty, r.output, wo);
+      out.stages.push_back({"write", "0 buildings", Since(t0)});
+      if (!r.report.empty()) WriteReport(r.report, out);
+      progress.Update(1.0, "done");
+      return out;
+    }
     if (footprints.empty())
       throw Error(footprint_path +
                   ": no footprint lies where the block's images see the ground "
                   "(a different CRS or area?)");
   }
   std::vector<cv::Mat> images(block.views.size());
-  tbb::parallel_for(size_t{0}, images.size(),
-                    [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
+  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
+    cv::Rect window;
+    if (tile && v < tile->windows.size()) {
+      const PixelWindow& w = tile->windows[v];
+      window = cv::Rect(w.x, w.y, w.width, w.height);
+    }
+    images[v] = ReadImage(block.views[v].image_path, window);
+  });
   out.stages.push_back({"read",
                         footprints.empty() ? StrFormat("%zu images", images.size())
                                            : StrFormat("%zu images, %zu footprints", images.size(),
@@ -458,12 +486,16 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<std::vector<bool>> used(segments.size());
     for (size_t v = 0; v < segments.size(); ++v) used[v].assign(segments[v].size(), false);
     std::vector<Segment3> known;
+    // Lines read from a file name segments of the whole images; in a tile's
+    // windows those ids name other segments.
+    const bool ids_apply = r.lines_in.empty() || !tile || tile->windows.empty();
     for (const Line3D& l : matched.lines) {
       known.push_back(l.segment);
-      for (const auto& [v, id] : l.observations)
-        if (v >= 0 && v < static_cast<int>(used.size()) && id >= 0 &&
-            id < static_cast<int>(used[v].size()))
-          used[v][id] = true;
+      if (ids_apply)
+        for (const auto& [v, id] : l.observations)
+          if (v >= 0 && v < static_cast<int>(used.size()) && id >= 0 &&
+              id < static_cast<int>(used[v].size()))
+            used[v][id] = true;
     }
     const std::vector<LiftedLine> lifts =
         LiftSegmentsOntoPlanes(block, segments, used, roof_planes, known, r.lift);
@@ -737,6 +769,17 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   t0 = Clock::now();
   const std::string support_result = ApplyEdgeSupport(block, images, r, &assembled, &out.rejected);
   const RunStage support_stage{"edge support", support_result, Since(t0)};
+  std::optional<RunStage> tile_stage;
+  if (manifest.aoi) {
+    const size_t before = assembled.model.buildings.size();
+    const std::vector<std::string> left = KeepTileBuildings(*manifest.aoi, frame, &assembled);
+    out.rejected.insert(out.rejected.end(), left.begin(), left.end());
+    tile_stage = RunStage{
+        "tile",
+        StrFormat("%zu of %zu buildings in the tile, ids prefixed %s_",
+                  assembled.model.buildings.size(), before, TileTag(*manifest.aoi).c_str()),
+        0.0};
+  }
   out.buildings = static_cast<int>(assembled.model.buildings.size());
   for (const Building& b : assembled.model.buildings)
     out.solids += static_cast<int>(b.Solids().size());
@@ -757,6 +800,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                                      : std::string()),
        assembly_seconds});
   out.stages.push_back(support_stage);
+  if (tile_stage) out.stages.push_back(*tile_stage);
 
   t0 = Clock::now();
   CityModel model = std::move(assembled.model);

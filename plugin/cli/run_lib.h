@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,13 @@ struct RunRequest {
   std::string format;  // empty: from the extension
   bool overwrite = false;
   bool stop_after_sweep = false;  // `roofsweep sweep`: write the half-planes, no buildings
+  // A tile (block CRS: min x, min y, max x, max y) in place of the
+  // manifest's aoi. With a tile from either, only the views that see it and
+  // `tile_buffer_m` around it are read, each in the window that does, and
+  // only the buildings whose ground centre lies in the tile are written, ids
+  // prefixed with the tile's tag (tile_lib.h).
+  std::optional<Eigen::Vector4d> aoi;
+  double tile_buffer_m = 30.0;
   // Optional 3D lines to start from instead of matching (an OGR line layer
   // such as `match` writes, or a segments JSON; block CRS): lines from
   // another tool, or the simulator's true edges to judge the later stages.

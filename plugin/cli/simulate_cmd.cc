@@ -59,15 +59,7 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
     }
     r.origin = Eigen::Vector3d(e, n, h);
   }
-  if (!aoi.empty()) {
-    double a, b, c, d;
-    char tail;
-    if (std::sscanf(aoi.c_str(), "%lf,%lf,%lf,%lf%c", &a, &b, &c, &d, &tail) != 4 || a >= c ||
-        b >= d) {
-      throw UsageError("Option -aoi expects MINX,MINY,MAXX,MAXY, got '" + aoi + "'", p.Synopsis());
-    }
-    r.aoi = Eigen::Vector4d(a, b, c, d);
-  }
+  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
   const SimulateSummary s = RunSimulate(r, *ctx.progress);
   if (!ctx.quiet) {
     std::printf(

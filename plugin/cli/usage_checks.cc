@@ -1,5 +1,7 @@
 #include "plugin/cli/usage_checks.h"
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "algorithms/core/error.h"
@@ -44,6 +46,16 @@ void RequireCityModelFormat(const ArgParser& p, const std::string& path,
                                "driver that can create files; see --formats)",
                      p.Synopsis());
   }
+}
+
+Eigen::Vector4d ParseAoi(const ArgParser& p, const std::string& text) {
+  double a, b, c, d;
+  char tail;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &a, &b, &c, &d, &tail) != 4 ||
+      !std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d) || a >= c ||
+      b >= d)
+    throw UsageError("Option -aoi expects MINX,MINY,MAXX,MAXY, got '" + text + "'", p.Synopsis());
+  return Eigen::Vector4d(a, b, c, d);
 }
 
 }  // namespace roofsweep::cli

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 
 #include "plugin/cli/arg_parser.h"
@@ -21,5 +22,8 @@ void RequireVectorFormat(const ArgParser& p, const std::string& path, const std:
 // -of for a city model output (CityGML, CityJSON, CityJSONSeq or a GDAL
 // vector driver), or the extension of `path` when `format` is empty.
 void RequireCityModelFormat(const ArgParser& p, const std::string& path, const std::string& format);
+
+// -aoi MINX,MINY,MAXX,MAXY: four finite numbers with min < max.
+Eigen::Vector4d ParseAoi(const ArgParser& p, const std::string& text);
 
 }  // namespace roofsweep::cli

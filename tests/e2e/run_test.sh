@@ -256,6 +256,95 @@ assert done < reach + along + 1, (done, m.groups())
 PY
 }
 
+# Plan centroids of the top-level buildings of a CityGML file (mean of the
+# ground-surface vertices), one "id x y" line each.
+centroids() {
+  python3 - "$1" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+for chunk in text.split('<bldg:Building gml:id="')[1:]:
+    bid = chunk.split('"', 1)[0]
+    xs, ys = [], []
+    for g in re.findall(r"<bldg:GroundSurface.*?</bldg:GroundSurface>", chunk, re.S):
+        for pl in re.findall(r"<gml:posList[^>]*>([^<]+)<", g):
+            v = list(map(float, pl.split()))
+            xs += v[0::3]
+            ys += v[1::3]
+    print(bid, sum(xs) / len(xs), sum(ys) / len(ys))
+PY
+}
+
+# Two tiles of a grid split the block between two buildings: each tile's run
+# writes the buildings whose ground centre lies in it, ids prefixed with the
+# tile's tag, and together they give the buildings of the whole run, each once.
+test_run_tiles() {
+  small_block || return
+  expect_ok tile_whole run "$SIM" -o "$WORK/whole.gml" -q || return
+  centroids "$WORK/whole.gml" >"$WORK/whole.txt"
+  local split lo
+  split=$(sort -k2 -g "$WORK/whole.txt" | awk 'NR==1{a=$2} NR==2{printf "%.3f", (a+$2)/2}')
+  [[ -n "$split" ]] || { fail tile_split "fewer than two buildings: $(cat "$WORK/whole.txt")"; return; }
+  lo=$(awk '{print $3}' "$WORK/whole.txt" | sort -g | head -1)
+  local y0 y1 x0 x1
+  y0=$(python3 -c "print($lo - 500)"); y1=$(python3 -c "print($lo + 500)")
+  x0=$(python3 -c "print($split - 500)"); x1=$(python3 -c "print($split + 500)")
+  expect_ok tile_west run "$SIM" -aoi "$x0,$y0,$split,$y1" -o "$WORK/west.gml" || return
+  grep -Eq "^tile: [0-9]+ of 4 views see it and its 30 m buffer; [0-9.]+ of [0-9.]+ megapixels read" \
+    "$WORK/stdout.txt" && pass tile_message || fail tile_message "$(grep -i tile "$WORK/stdout.txt")"
+  grep -Eq "^tile +[0-9]+ of [0-9]+ buildings in the tile" "$WORK/stdout.txt" \
+    && pass tile_stage || fail tile_stage "$(grep -i tile "$WORK/stdout.txt")"
+  expect_ok tile_east run "$SIM" -aoi "$split,$y0,$x1,$y1" -o "$WORK/east.gml" -q || return
+  centroids "$WORK/west.gml" >"$WORK/west.txt"
+  centroids "$WORK/east.gml" >"$WORK/east.txt"
+  python3 - "$WORK/whole.txt" "$WORK/west.txt" "$WORK/east.txt" "$split" <<'PY' \
+    && pass tile_buildings_once || fail tile_buildings_once "$(cat "$WORK"/{whole,west,east}.txt)"
+import sys
+read = lambda f: [(l.split()[0], float(l.split()[1]), float(l.split()[2])) for l in open(f)]
+whole, west, east, split = read(sys.argv[1]), read(sys.argv[2]), read(sys.argv[3]), float(sys.argv[4])
+assert west and east, "a tile without buildings"
+assert all(x < split for _, x, _ in west) and all(x >= split for _, x, _ in east)
+ids = [i for i, _, _ in west + east]
+assert len(set(ids)) == len(ids), "an id twice"
+assert all(i.startswith("t") and "_rs_b" in i for i in ids), ids
+# One to one with the whole run's buildings, within a metre.
+tiles = west + east
+assert len(tiles) == len(whole), (len(tiles), len(whole))
+for _, x, y in whole:
+    assert min((x - a) ** 2 + (y - b) ** 2 for _, a, b in tiles) < 1.0, (x, y)
+PY
+  # The tiles' outputs gathered into one model: every building once, a
+  # valid CityGML file; appending a tile twice is refused.
+  expect_ok tile_append_west convert "$WORK/west.gml" "$WORK/city.gml" -append -q || return
+  expect_ok tile_append_east convert "$WORK/east.gml" "$WORK/city.gml" -append || return
+  grep -q "there before" "$WORK/stdout.txt" && pass tile_append_message \
+    || fail tile_append_message "$(cat "$WORK/stdout.txt")"
+  [[ $(grep -c "<bldg:Building " "$WORK/city.gml") -eq $(wc -l <"$WORK/whole.txt") ]] \
+    && pass tile_append_count || fail tile_append_count "$(grep -c "<bldg:Building " "$WORK/city.gml")"
+  local xsd
+  if xsd=$(shared_or_skip "$XSD_REL"); then
+    xmllint --noout --nonet --schema "$xsd" "$WORK/city.gml" 2>"$WORK/xml.txt" \
+      && pass tile_append_schema_valid || fail tile_append_schema_valid "$(head -c 400 "$WORK/xml.txt")"
+  fi
+  cp "$WORK/city.gml" "$WORK/city_before.gml"
+  expect_fail tile_append_twice "" "already" -- convert "$WORK/east.gml" "$WORK/city.gml" -append
+  cmp -s "$WORK/city.gml" "$WORK/city_before.gml" && pass tile_append_twice_untouched \
+    || fail tile_append_twice_untouched "city.gml changed"
+  # A small tile reads a small part of the images.
+  local bx by
+  read -r _ bx by < <(head -1 "$WORK/west.txt")
+  expect_ok tile_small run "$SIM" -aoi "$(python3 -c "print(f'{$bx-3},{$by-3},{$bx+3},{$by+3}')")" \
+    -tile_buffer 5 -o "$WORK/small.gml" || return
+  python3 - "$WORK/stdout.txt" <<'PY' && pass tile_reads_windows || fail tile_reads_windows "$(grep '^tile' "$WORK/stdout.txt")"
+import re, sys
+m = re.search(r"^tile: \d+ of 4 views .*; ([0-9.]+) of ([0-9.]+) megapixels read", open(sys.argv[1]).read(), re.M)
+assert m and float(m.group(1)) < 0.5 * float(m.group(2)), m and m.groups()
+PY
+  # A tile the images do not see, and a malformed one.
+  expect_fail tile_unseen "$WORK/far.gml" "no image sees the tile" -- run "$SIM" \
+    -aoi "$(python3 -c "print($split + 1e5)"),$y0,$(python3 -c "print($split + 1e5 + 10)"),$y1" -o "$WORK/far.gml"
+  expect_fail tile_bad_aoi "$WORK/bad.gml" "aoi" -- run "$SIM" -aoi 5,5,1,1 -o "$WORK/bad.gml"
+}
+
 test_run_refuses_bad_input() {
   small_block || return
   touch "$WORK/exists.gml"

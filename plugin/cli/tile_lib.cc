@@ -1,0 +1,113 @@
+#include "plugin/cli/tile_lib.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "algorithms/core/error.h"
+#include "algorithms/core/format.h"
+
+namespace roofsweep {
+namespace {
+
+// Image filters, flanking regions and correlation windows reach this far
+// beyond the image of the region (pixels).
+constexpr int kWindowMarginPx = 48;
+
+void Rename(Building* b, const std::string& prefix, std::map<std::string, std::string>* renamed) {
+  const std::string id = prefix + b->id;
+  (*renamed)[b->id] = id;
+  b->id = id;
+  for (Building& p : b->parts) Rename(&p, prefix, renamed);
+}
+
+}  // namespace
+
+std::string TileTag(const Eigen::Vector4d& aoi) {
+  std::string tag = "t" + StrFormat("%.10g_%.10g", aoi[0], aoi[1]);
+  for (char& c : tag)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.' && c != '-') c = '_';
+  return tag;
+}
+
+TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source) {
+  TileCut cut;
+  const Eigen::Vector4d& a = *block->aoi;
+  cut.region = Eigen::Vector4d(a[0] - buffer_m, a[1] - buffer_m, a[2] + buffer_m, a[3] + buffer_m);
+  // The heights the region spans: the ground under it (a DTM sampled on a
+  // 9 x 9 grid) up to the tallest building.
+  double z_lo = INFINITY, z_hi = -INFINITY;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      const double x = cut.region[0] + (cut.region[2] - cut.region[0]) * i / 8.0;
+      const double y = cut.region[1] + (cut.region[3] - cut.region[1]) * j / 8.0;
+      const double g = block->ground.HeightAt(x, y);
+      if (std::isfinite(g)) z_lo = std::min(z_lo, g), z_hi = std::max(z_hi, g);
+    }
+  if (!std::isfinite(z_lo)) {
+    cut.message = "tile: no ground height under it; every image is read whole";
+    return cut;
+  }
+  long long full = 0, read = 0;
+  for (const View& v : block->views)
+    full += static_cast<long long>(block->CameraOf(v).width) * block->CameraOf(v).height;
+  // A metre of slack below: a DTM interpolated between its posts.
+  BlockWindows w = CropBlockToRegion(*block, cut.region, z_lo - 1.0,
+                                     z_hi + block->max_building_height, kWindowMarginPx);
+  if (w.block.views.empty())
+    throw Error(source + ": no image sees the tile (aoi) or the " + StrFormat("%.0f", buffer_m) +
+                " m around it");
+  for (const PixelWindow& p : w.windows) read += p.Pixels();
+  cut.message =
+      StrFormat("tile: %zu of %zu views see it and its %.0f m buffer; %.0f of %.0f megapixels read",
+                w.block.views.size(), block->views.size(), buffer_m, read / 1e6, full / 1e6);
+  *block = std::move(w.block);
+  cut.windows = std::move(w.windows);
+  return cut;
+}
+
+std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const LocalFrame& frame,
+                                           AssemblyResult* assembled) {
+  std::vector<std::string> left;
+  std::map<std::string, std::string> renamed;
+  std::map<std::string, std::string> reason_of;
+  const std::string prefix = TileTag(aoi) + "_";
+  std::vector<Building> kept;
+  for (Building& b : assembled->model.buildings) {
+    const std::optional<Eigen::Vector2d> c = b.PlanCentroid();
+    std::string why;
+    if (!c) {
+      why = "no ground surface to tell its tile";
+    } else {
+      const double z = std::isfinite(b.GroundZ()) ? b.GroundZ() : 0.0;
+      const Eigen::Vector3d p = frame.ToCrs({c->x(), c->y(), z});
+      if (!(aoi[0] <= p.x() && p.x() < aoi[2] && aoi[1] <= p.y() && p.y() < aoi[3]))
+        why = StrFormat(
+            "left to a neighbouring tile: its ground centre %.2f, %.2f lies outside "
+            "this one",
+            p.x(), p.y());
+    }
+    if (!why.empty()) {
+      for (const Building* s : static_cast<const Building&>(b).Solids()) reason_of[s->id] = why;
+      reason_of[b.id] = why;
+      left.push_back(b.id + ": " + why);
+      continue;
+    }
+    Rename(&b, prefix, &renamed);
+    kept.push_back(std::move(b));
+  }
+  assembled->model.buildings = std::move(kept);
+  for (size_t i = 0; i < assembled->plane_building.size(); ++i) {
+    std::string& id = assembled->plane_building[i];
+    if (id.empty()) continue;
+    if (const auto r = reason_of.find(id); r != reason_of.end()) {
+      if (i < assembled->plane_reason.size()) assembled->plane_reason[i] = r->second;
+      id.clear();
+    } else if (const auto n = renamed.find(id); n != renamed.end()) {
+      id = n->second;
+    }
+  }
+  return left;
+}
+
+}  // namespace roofsweep

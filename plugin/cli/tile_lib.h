@@ -1,0 +1,47 @@
+#pragma once
+
+// Tiled runs: a batch engine runs one `roofsweep run` per tile of a city
+// block (the manifest's aoi or -aoi). Each run reads only what can see its
+// tile and writes only the buildings it owns, so that the tiles' outputs
+// together hold every building once.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/geometry/block_window.h"
+#include "io/core/local_frame.h"
+
+namespace roofsweep {
+
+struct TileCut {
+  // Local x, y box processed: the tile grown by the buffer on every side.
+  Eigen::Vector4d region = Eigen::Vector4d::Zero();
+  // Per view of the cut block, the window of its image to read; empty when
+  // the block was not cut (no ground model to bound the heights).
+  std::vector<PixelWindow> windows;
+  std::string message;  // what was cut, for the log
+};
+
+// Cuts `block` (which has an aoi) down to the views that see its tile and
+// the buffer around it, between the ground and max_building_height above
+// it, each with the window of its image that does. Buildings that straddle
+// the tile's border are reconstructed whole when they reach no further than
+// `buffer_m` beyond it. Throws when no view sees the tile.
+TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source);
+
+// Keeps the buildings whose plan centroid (of the ground surfaces) lies in
+// the tile `aoi` (block CRS: min x <= E < max x, min y <= N < max y; one
+// tile of a grid owns each point) and prefixes their ids (and their parts')
+// with the tile's tag, so that the tiles' outputs can be merged. The others
+// are left to the neighbouring tiles: one line each in the return value,
+// and their planes' plane_building cleared with that reason.
+std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const LocalFrame& frame,
+                                           AssemblyResult* assembled);
+
+// "t<min x>_<min y>" of the tile, usable in an xs:ID.
+std::string TileTag(const Eigen::Vector4d& aoi);
+
+}  // namespace roofsweep
