@@ -7,7 +7,8 @@ import time
 
 import processing
 import pytest
-from qgis.core import QgsCoordinateReferenceSystem, QgsProcessingException, QgsVectorLayer, QgsWkbTypes
+from qgis.core import (QgsCoordinateReferenceSystem, QgsCoordinateTransform, QgsProcessingException, QgsProject,
+                       QgsVectorLayer, QgsWkbTypes)
 
 from conftest import RecordingFeedback, has_command, shared_or_skip
 
@@ -368,3 +369,15 @@ def test_reconstruct_lod2_buildings_headless(tiny_block, roofsweep_exe, tmp_path
     built = QgsVectorLayer(out_fp + "|layername=buildings", "b", "ogr")
     assert built.isValid() and built.featureCount() > 0
     assert {f["footprint_id"] for f in built.getFeatures()} <= ids
+    # A tile around the whole block, given in another CRS (WGS 84): the same
+    # buildings, ids prefixed with the tile's corner in the block's CRS.
+    box = lyr.extent()
+    box.grow(50)
+    to_wgs84 = QgsCoordinateTransform(lyr.crs(), QgsCoordinateReferenceSystem("EPSG:4326"), QgsProject.instance())
+    geo = to_wgs84.transformBoundingBox(box)
+    out_tile = str(tmp_path / "tile.gpkg")
+    processing.run("roofsweep:run", {"BLOCK": sim["BLOCK"], "OUTPUT": out_tile, "EXTENT": "{},{},{},{} [EPSG:4326]".format(
+        geo.xMinimum(), geo.xMaximum(), geo.yMinimum(), geo.yMaximum())}, feedback=RecordingFeedback())
+    tiled = QgsVectorLayer(out_tile + "|layername=buildings", "t", "ogr")
+    assert tiled.isValid() and tiled.featureCount() == lyr.featureCount()
+    assert all(f["id"].startswith("t") and "_rs_b" in f["id"] for f in tiled.getFeatures())

@@ -1,9 +1,11 @@
 """Reconstruct LoD2 buildings: roofsweep run (the whole pipeline)."""
 
-from qgis.core import (QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
+import json
+
+from qgis.core import (QgsCoordinateReferenceSystem, QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
                        QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
                        QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
-                       QgsProcessingParameterNumber)
+                       QgsProcessingParameterExtent, QgsProcessingParameterNumber)
 
 from .base import CITYMODEL_LAYERS, LINES_LAYERS, RoofsweepAlgorithm
 from .convert import OUTPUT_FILTER
@@ -17,9 +19,11 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             "buildings. The output format follows the extension (GeoPackage, CityGML, CityJSON); GeoPackage "
             "layers are added to the project. Optional building footprints (any polygon layer) restrict "
             "the reconstruction: walls stand on the footprint where the roof planes cover it, and each "
-            "building carries its footprint's id.")
+            "building carries its footprint's id. With a tile extent, only the images and image windows "
+            "that see it (and 30 m around it) are read, and only the buildings whose ground centre lies in "
+            "it are written, ids prefixed with the tile's corner: the tiles of a grid hold every building once.")
     USES_OPTIONS = ("-o", "-overwrite", "-report", "-planes", "-min_height", "-footprints",
-                    "-footprints_layer", "-footprints_id")
+                    "-footprints_layer", "-footprints_id", "-aoi")
 
     BLOCK = "BLOCK"
     OUTPUT = "OUTPUT"
@@ -28,6 +32,7 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
     MIN_HEIGHT = "MIN_HEIGHT"
     FOOTPRINTS = "FOOTPRINTS"
     FOOTPRINT_ID = "FOOTPRINT_ID"
+    EXTENT = "EXTENT"
     LAYERS = "LAYERS"
 
     def initAlgorithm(self, config=None):
@@ -46,6 +51,8 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterField(
             self.FOOTPRINT_ID, self.tr("Footprint id field (default: id, identificatie, gml_id or fid)"),
             parentLayerParameterName=self.FOOTPRINTS, optional=True))
+        self.addParameter(QgsProcessingParameterExtent(
+            self.EXTENT, self.tr("Tile: only the buildings whose ground centre lies in this extent"), optional=True))
         min_height = QgsProcessingParameterNumber(self.MIN_HEIGHT, self.tr("Lowest roof above the ground (m)"),
                                                   QgsProcessingParameterNumber.Double, 2.0, minValue=0.0)
         min_height.setFlags(min_height.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
@@ -76,6 +83,13 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             fields = self.parameterAsFields(parameters, self.FOOTPRINT_ID, context)
             if fields:
                 args += ["-footprints_id", fields[0]]
+        if self.given(parameters, self.EXTENT):
+            # roofsweep takes the tile in the block's CRS.
+            with open(block) as f:
+                crs = QgsCoordinateReferenceSystem(json.load(f).get("crs") or "")
+            rect = self.parameterAsExtent(parameters, self.EXTENT, context, crs if crs.isValid() else None)
+            args += ["-aoi", ",".join(repr(v) for v in (rect.xMinimum(), rect.yMinimum(),
+                                                         rect.xMaximum(), rect.yMaximum()))]
         self.run_program(args, feedback)
         layers = []
         if out.lower().endswith(".gpkg"):
