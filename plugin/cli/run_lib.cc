@@ -295,6 +295,13 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                   ": no footprint lies where the block's images see the ground "
                   "(a different CRS or area?)");
   }
+  long long pixels = 0;
+  for (size_t v = 0; v < block.views.size(); ++v)
+    pixels += tile && v < tile->windows.size()
+                  ? tile->windows[v].Pixels()
+                  : static_cast<long long>(block.CameraOf(block.views[v]).width) *
+                        block.CameraOf(block.views[v]).height;
+  RequireMemoryForImages(pixels, static_cast<int>(block.views.size()), r.block);
   std::vector<cv::Mat> images(block.views.size());
   tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
     cv::Rect window;

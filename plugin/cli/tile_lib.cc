@@ -1,7 +1,11 @@
 #include "plugin/cli/tile_lib.h"
 
+#include <cpl_conv.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 
 #include "algorithms/core/error.h"
@@ -14,6 +18,12 @@ namespace {
 // beyond the image of the region (pixels).
 constexpr int kWindowMarginPx = 48;
 
+// Peak resident memory of `run` per pixel read, and what it needs besides:
+// 1.25 GB for 33.5 megapixels (realistic, eight 2048 x 2048 views) and
+// 0.11 GB for 1 megapixel, rounded up.
+constexpr double kRunBytesPerPixel = 40;
+constexpr double kRunBaseBytes = 0.2e9;
+
 void Rename(Building* b, const std::string& prefix, std::map<std::string, std::string>* renamed) {
   const std::string id = prefix + b->id;
   (*renamed)[b->id] = id;
@@ -22,6 +32,29 @@ void Rename(Building* b, const std::string& prefix, std::map<std::string, std::s
 }
 
 }  // namespace
+
+void RequireMemoryForImages(long long pixels, int views, const std::string& source) {
+  double limit_gb = 0;
+  const char* configured = CPLGetConfigOption("ROOFSWEEP_MAX_MEMORY", nullptr);
+  if (configured) {
+    char* end = nullptr;
+    limit_gb = std::strtod(configured, &end);
+    if (end == configured || *end != '\0' || !(limit_gb > 0))
+      throw Error(StrFormat("ROOFSWEEP_MAX_MEMORY: expected gigabytes, got '%s'", configured));
+  } else {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page <= 0) return;  // unknown: no guard
+    limit_gb = static_cast<double>(pages) * static_cast<double>(page) / 1e9;
+  }
+  const double need_gb = (kRunBytesPerPixel * static_cast<double>(pixels) + kRunBaseBytes) / 1e9;
+  if (need_gb > limit_gb)
+    throw Error(
+        StrFormat("%s: the %d images to read hold %.0f megapixels, which need about %.1f "
+                  "GB; %s %.1f GB. Run the block in tiles: -aoi MINX,MINY,MAXX,MAXY "
+                  "(examples/tiles.sh)",
+                  source.c_str(), views, pixels / 1e6, need_gb,
+                  configured ? "ROOFSWEEP_MAX_MEMORY allows" : "this machine has", limit_gb));
+}
 
 std::string TileTag(const Eigen::Vector4d& aoi) {
   std::string tag = "t" + StrFormat("%.10g_%.10g", aoi[0], aoi[1]);

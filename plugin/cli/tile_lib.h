@@ -41,6 +41,14 @@ TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source)
 std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const LocalFrame& frame,
                                            AssemblyResult* assembled);
 
+// Refuses, before any image is read, a run whose images would not fit in
+// this machine's memory: about kRunBytesPerPixel for every pixel read (the
+// images as float RGB and what the stages derive from them; measured on the
+// simulated blocks) against the physical memory, or against the GDAL
+// configuration option ROOFSWEEP_MAX_MEMORY (GB) when set. The error names
+// -aoi: a tiled run reads only what sees its tile.
+void RequireMemoryForImages(long long pixels, int views, const std::string& source);
+
 // "t<min x>_<min y>" of the tile, usable in an xs:ID.
 std::string TileTag(const Eigen::Vector4d& aoi);
 

@@ -353,6 +353,11 @@ test_run_refuses_bad_input() {
     -min_edge_support 1.5
   expect_fail run_no_block "$WORK/x.gml" "nope" -- run "$WORK/nope" -o "$WORK/x.gml"
   expect_fail run_bad_format "$WORK/x.abc" "format|extension" -- run "$SIM" -o "$WORK/x.abc"
+  # Images that would not fit in memory are refused before they are read,
+  # pointing at tiles (the limit lowered to below what this block needs).
+  expect_fail run_memory "$WORK/m.gml" "megapixels, which need about .* GB; ROOFSWEEP_MAX_MEMORY allows 0.1 GB.*-aoi" \
+    -- run "$SIM" -o "$WORK/m.gml" --config ROOFSWEEP_MAX_MEMORY 0.1
+  expect_ok run_memory_enough run "$SIM" -o "$WORK/m.gml" -q --config ROOFSWEEP_MAX_MEMORY 1
 }
 
 run_tests
