@@ -779,7 +779,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   std::optional<RunStage> tile_stage;
   if (manifest.aoi) {
     const size_t before = assembled.model.buildings.size();
-    const std::vector<std::string> left = KeepTileBuildings(*manifest.aoi, frame, &assembled);
+    const std::vector<std::string> left =
+        KeepTileBuildings(*manifest.aoi, frame, footprints, &assembled);
     out.rejected.insert(out.rejected.end(), left.begin(), left.end());
     tile_stage = RunStage{
         "tile",

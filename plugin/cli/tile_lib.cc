@@ -100,14 +100,41 @@ TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source)
 }
 
 std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const LocalFrame& frame,
+                                           const std::vector<Footprint>& footprints,
                                            AssemblyResult* assembled) {
+  // Shoelace moments of the footprints, summed over the pieces of an id.
+  std::map<std::string, std::pair<double, Eigen::Vector2d>> moments;
+  for (const Footprint& f : footprints) {
+    auto& [area, moment] = moments.try_emplace(f.id, 0.0, Eigen::Vector2d::Zero()).first->second;
+    double a = 0;
+    Eigen::Vector2d m = Eigen::Vector2d::Zero();
+    for (size_t i = 0; i < f.outline.size(); ++i) {
+      const Eigen::Vector2d& p = f.outline[i];
+      const Eigen::Vector2d& q = f.outline[(i + 1) % f.outline.size()];
+      const double cross = p.x() * q.y() - q.x() * p.y();
+      a += 0.5 * cross;
+      m += cross * (p + q) / 6.0;
+    }
+    area += std::abs(a);
+    moment += a < 0 ? Eigen::Vector2d(-m) : m;
+  }
   std::vector<std::string> left;
   std::map<std::string, std::string> renamed;
   std::map<std::string, std::string> reason_of;
   const std::string prefix = TileTag(aoi) + "_";
   std::vector<Building> kept;
   for (Building& b : assembled->model.buildings) {
-    const std::optional<Eigen::Vector2d> c = b.PlanCentroid();
+    std::optional<Eigen::Vector2d> c;
+    const char* what = "ground centre";
+    const auto fp = b.string_attributes.find("footprint_id");
+    if (fp != b.string_attributes.end()) {
+      const auto m = moments.find(fp->second);
+      if (m != moments.end() && m->second.first > 1e-12) {
+        c = Eigen::Vector2d(m->second.second / m->second.first);
+        what = "footprint's centre";
+      }
+    }
+    if (!c) c = b.PlanCentroid();
     std::string why;
     if (!c) {
       why = "no ground surface to tell its tile";
@@ -115,10 +142,8 @@ std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const Loc
       const double z = std::isfinite(b.GroundZ()) ? b.GroundZ() : 0.0;
       const Eigen::Vector3d p = frame.ToCrs({c->x(), c->y(), z});
       if (!(aoi[0] <= p.x() && p.x() < aoi[2] && aoi[1] <= p.y() && p.y() < aoi[3]))
-        why = StrFormat(
-            "left to a neighbouring tile: its ground centre %.2f, %.2f lies outside "
-            "this one",
-            p.x(), p.y());
+        why = StrFormat("left to a neighbouring tile: its %s %.2f, %.2f lies outside this one",
+                        what, p.x(), p.y());
     }
     if (!why.empty()) {
       for (const Building* s : static_cast<const Building&>(b).Solids()) reason_of[s->id] = why;

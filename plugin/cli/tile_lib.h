@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/buildings/footprint.h"
 #include "algorithms/geometry/block_window.h"
 #include "io/core/local_frame.h"
 
@@ -38,7 +39,13 @@ TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source)
 // with the tile's tag, so that the tiles' outputs can be merged. The others
 // are left to the neighbouring tiles: one line each in the return value,
 // and their planes' plane_building cleared with that reason.
+//
+// With footprints, a building labelled with a footprint (footprint_id) is
+// owned by the tile that holds the footprint's own centroid (local frame,
+// area weighted over the pieces that share the id), which does not depend
+// on the reconstruction: neighbouring tiles agree on it exactly.
 std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const LocalFrame& frame,
+                                           const std::vector<Footprint>& footprints,
                                            AssemblyResult* assembled);
 
 // Refuses, before any image is read, a run whose images would not fit in

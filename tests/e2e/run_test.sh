@@ -312,6 +312,19 @@ assert len(tiles) == len(whole), (len(tiles), len(whole))
 for _, x, y in whole:
     assert min((x - a) ** 2 + (y - b) ** 2 for _, a, b in tiles) < 1.0, (x, y)
 PY
+  # With footprints, each footprint's own centre decides its tile: no
+  # footprint id in both, and the tile's report says why the others went.
+  expect_ok tile_fp_west run "$SIM" -aoi "$x0,$y0,$split,$y1" -footprints "$SIM/footprints.gpkg" \
+    -o "$WORK/fw.gml" -report "$WORK/fw.json" -q || return
+  expect_ok tile_fp_east run "$SIM" -aoi "$split,$y0,$x1,$y1" -footprints "$SIM/footprints.gpkg" \
+    -o "$WORK/fe.gml" -q || return
+  python3 - "$WORK/fw.gml" "$WORK/fe.gml" "$WORK/fw.json" <<'PY' && pass tile_fp_once || fail tile_fp_once "see the tiles"
+import json, re, sys
+ids = [re.findall(r'name="footprint_id">\s*<gen:value>([^<]+)<', open(f).read()) for f in sys.argv[1:3]]
+assert ids[0] and ids[1] and not set(ids[0]) & set(ids[1]), ids
+left = [r for r in json.load(open(sys.argv[3]))["rejected"] if "neighbouring tile" in r]
+assert left and all("footprint's centre" in r for r in left), left
+PY
   # The tiles' outputs gathered into one model: every building once, a
   # valid CityGML file; appending a tile twice is refused.
   expect_ok tile_append_west convert "$WORK/west.gml" "$WORK/city.gml" -append -q || return
