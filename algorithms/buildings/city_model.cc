@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "algorithms/buildings/convex_polygon2.h"
+
 namespace roofsweep {
 
 const char* SurfaceTypeName(SurfaceType t) {
@@ -98,29 +100,29 @@ double Building::RoofTopZ() const {
 }
 
 std::optional<Eigen::Vector2d> Building::PlanCentroid() const {
-  // Shoelace moments of each ring in plan. A ground polygon faces down, so
-  // its exterior runs clockwise in plan and its holes anticlockwise: the
-  // exterior's sign turns each polygon's sum positive, holes included.
+  // A ground polygon faces down, so its exterior runs clockwise in plan and
+  // its holes anticlockwise: the exterior's sign turns each polygon's sums
+  // positive, holes included.
   double area = 0;
   Eigen::Vector2d moment = Eigen::Vector2d::Zero();
-  auto ring_sums = [](const std::vector<Eigen::Vector3d>& ring, double* a, Eigen::Vector2d* m) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Eigen::Vector3d& p = ring[i];
-      const Eigen::Vector3d& q = ring[(i + 1) % ring.size()];
-      const double cross = p.x() * q.y() - q.x() * p.y();
-      *a += 0.5 * cross;
-      *m += cross * Eigen::Vector2d(p.x() + q.x(), p.y() + q.y()) / 6.0;
-    }
+  const auto plan = [](const std::vector<Eigen::Vector3d>& ring) {
+    Ring2 r;
+    for (const Eigen::Vector3d& v : ring) r.push_back(v.head<2>());
+    return r;
   };
   for (const Building* b : Solids())
     for (const auto& s : b->surfaces) {
       if (s.type != SurfaceType::kGround) continue;
       for (const auto& poly : s.polygons) {
-        double a = 0;
-        Eigen::Vector2d m = Eigen::Vector2d::Zero();
-        ring_sums(poly.exterior, &a, &m);
+        const Ring2 outer = plan(poly.exterior);
+        double a = SignedArea(outer);
+        Eigen::Vector2d m = FirstMoment(outer);
         const double sign = a < 0 ? -1.0 : 1.0;
-        for (const auto& h : poly.holes) ring_sums(h, &a, &m);
+        for (const auto& h : poly.holes) {
+          const Ring2 hole = plan(h);
+          a += SignedArea(hole);
+          m += FirstMoment(hole);
+        }
         area += sign * a;
         moment += sign * m;
       }

@@ -57,6 +57,16 @@ double SignedArea(const Ring2& r) {
   return 0.5 * a;
 }
 
+Eigen::Vector2d FirstMoment(const Ring2& r) {
+  Eigen::Vector2d m = Eigen::Vector2d::Zero();
+  for (size_t i = 0, n = r.size(); i < n; ++i) {
+    const Eigen::Vector2d& p = r[i];
+    const Eigen::Vector2d& q = r[(i + 1) % n];
+    m += (p.x() * q.y() - q.x() * p.y()) * (p + q) / 6.0;
+  }
+  return m;
+}
+
 Ring2 ClipHalfPlane(const Ring2& ring, double a, double b, double c) {
   Ring2 out;
   const size_t n = ring.size();

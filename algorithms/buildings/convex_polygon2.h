@@ -19,6 +19,9 @@ Ring2 ConvexHull(std::vector<Eigen::Vector2d> points);
 
 // Signed area (> 0 counter-clockwise).
 double SignedArea(const Ring2& ring);
+// Area times centroid (the first moments) of a ring, signed as SignedArea:
+// the centroid is FirstMoment(ring) / SignedArea(ring).
+Eigen::Vector2d FirstMoment(const Ring2& ring);
 
 // The part of `ring` where a.x + b.y + c <= 0 (Sutherland-Hodgman against
 // one half-plane; convex in, convex out; may return fewer than 3 vertices).

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/format.h"
 
@@ -102,21 +103,13 @@ TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source)
 std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const LocalFrame& frame,
                                            const std::vector<Footprint>& footprints,
                                            AssemblyResult* assembled) {
-  // Shoelace moments of the footprints, summed over the pieces of an id.
+  // Area and first moments of the footprints, summed over the pieces of an id.
   std::map<std::string, std::pair<double, Eigen::Vector2d>> moments;
   for (const Footprint& f : footprints) {
     auto& [area, moment] = moments.try_emplace(f.id, 0.0, Eigen::Vector2d::Zero()).first->second;
-    double a = 0;
-    Eigen::Vector2d m = Eigen::Vector2d::Zero();
-    for (size_t i = 0; i < f.outline.size(); ++i) {
-      const Eigen::Vector2d& p = f.outline[i];
-      const Eigen::Vector2d& q = f.outline[(i + 1) % f.outline.size()];
-      const double cross = p.x() * q.y() - q.x() * p.y();
-      a += 0.5 * cross;
-      m += cross * (p + q) / 6.0;
-    }
+    const double a = SignedArea(f.outline);
     area += std::abs(a);
-    moment += a < 0 ? Eigen::Vector2d(-m) : m;
+    moment += (a < 0 ? -1.0 : 1.0) * FirstMoment(f.outline);
   }
   std::vector<std::string> left;
   std::map<std::string, std::string> renamed;
