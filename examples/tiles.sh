@@ -17,21 +17,10 @@ mkdir -p "$W/out"
 "$RS" simulate -preset easy -seed 2 -size 768 -gsd 0.1 -strips 2 -views 3 -buildings 8 \
   -o "$W/sim" -overwrite -q
 
-# 2. A grid of tiles over the ground the images see (block CRS), one
-#    "MINX,MINY,MAXX,MAXY" line each. Aligned to the tile size, so that the
-#    grids of neighbouring blocks meet.
-"$RS" info "$W/sim" --json | python3 -c '
-import json, math, sys
-d, size = json.load(sys.stdin), float(sys.argv[1])
-half = max(math.sqrt(i["footprint_area_m2"]) / 2 for i in d["images"])
-xs = [i["position"][0] for i in d["images"]]
-ys = [i["position"][1] for i in d["images"]]
-x0, x1 = math.floor((min(xs) - half) / size), math.ceil((max(xs) + half) / size)
-y0, y1 = math.floor((min(ys) - half) / size), math.ceil((max(ys) + half) / size)
-for i in range(x0, x1):
-    for j in range(y0, y1):
-        print("%g,%g,%g,%g" % (i * size, j * size, (i + 1) * size, (j + 1) * size))
-' "$SIZE" >"$W/tiles.txt"
+# 2. The tiles of a grid that at least two images see, one
+#    "MINX,MINY,MAXX,MAXY" line each (block CRS). Aligned to the tile size, so
+#    that the grids of neighbouring blocks meet.
+"$RS" info "$W/sim" -tiles "$SIZE" >"$W/tiles.txt"
 echo "$(wc -l <"$W/tiles.txt") tiles of $SIZE m"
 
 # 3. The batch: one run per tile, two at a time.

@@ -1,8 +1,12 @@
 #include <iostream>
 
+#include "algorithms/core/format.h"
+#include "io/core/block_manifest.h"
+#include "io/core/local_frame.h"
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/info_lib.h"
+#include "plugin/cli/tile_lib.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -10,14 +14,37 @@ namespace {
 int Info(const std::vector<std::string>& args, Context&) {
   std::string block;
   bool json = false;
+  double tiles = 0;
   ArgParser p("info",
               "Describes a block: images, cameras, CRS, GSD per image, overlap graph, warnings.");
   p.Positional("BLOCK", &block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
       .Flag("--json|-json", &json, "print one JSON object instead of the table")
+      .Option("-tiles", &tiles, "SIZE",
+              "print instead the tiles of a SIZE grid (block CRS units, aligned to multiples of "
+              "SIZE) that at least two images see, one MINX,MINY,MAXX,MAXY per line: the -aoi of "
+              "each `run` a batch engine starts (with --json: an array)")
       .Example("roofsweep info out/block")
-      .Example("roofsweep info vgg:merton1 --json");
+      .Example("roofsweep info vgg:merton1 --json")
+      .Example(
+          "roofsweep info city/block.json -tiles 250 | xargs -P 8 -I{} roofsweep run "
+          "city/block.json -aoi {} -o tiles/{}.gml");
   if (!p.Parse(args)) return 0;
+  if (p.Given("-tiles") && !(tiles > 0))
+    throw UsageError("Option -tiles expects a positive tile size", p.Synopsis());
   const BlockInfo info = RunInfo(block);
+  if (tiles > 0) {
+    const std::vector<Eigen::Vector4d> grid =
+        TileGrid(info.overview.footprints, ManifestLocalFrame(info.manifest), tiles);
+    nlohmann::json a = nlohmann::json::array();
+    for (const Eigen::Vector4d& t : grid) {
+      if (json)
+        a.push_back({t[0], t[1], t[2], t[3]});
+      else
+        std::cout << StrFormat("%.10g,%.10g,%.10g,%.10g\n", t[0], t[1], t[2], t[3]);
+    }
+    if (json) std::cout << a.dump() << "\n";
+    return 0;
+  }
   if (json) {
     std::cout << InfoToJson(info).dump(2) << "\n";
   } else {

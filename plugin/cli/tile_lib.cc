@@ -57,6 +57,44 @@ void RequireMemoryForImages(long long pixels, int views, const std::string& sour
                   configured ? "ROOFSWEEP_MAX_MEMORY allows" : "this machine has", limit_gb));
 }
 
+std::vector<Eigen::Vector4d> TileGrid(const std::vector<ViewFootprint>& footprints,
+                                      const LocalFrame& frame, double size) {
+  if (!(size > 0)) throw Error("tiles: the tile size must be positive");
+  std::vector<Ring2> rings;
+  Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  for (const ViewFootprint& f : footprints) {
+    if (!f.valid) continue;
+    Ring2 r;
+    for (const Eigen::Vector3d& v : f.outline) {
+      const Eigen::Vector2d c = frame.ToCrs(v).head<2>();
+      r.push_back(c);
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+    if (SignedArea(r) < 0) std::reverse(r.begin(), r.end());
+    if (r.size() >= 3) rings.push_back(std::move(r));
+  }
+  std::vector<Eigen::Vector4d> tiles;
+  if (rings.empty()) return tiles;
+  const double i0 = std::floor(lo.x() / size), i1 = std::ceil(hi.x() / size);
+  const double j0 = std::floor(lo.y() / size), j1 = std::ceil(hi.y() / size);
+  if ((i1 - i0) * (j1 - j0) > 1e6)
+    throw Error(StrFormat("tiles: %.0f x %.0f tiles of %g; choose a larger tile size", i1 - i0,
+                          j1 - j0, size));
+  for (double j = j0; j < j1; ++j)
+    for (double i = i0; i < i1; ++i) {
+      const Ring2 cell = {{i * size, j * size},
+                          {(i + 1) * size, j * size},
+                          {(i + 1) * size, (j + 1) * size},
+                          {i * size, (j + 1) * size}};
+      int covering = 0;
+      for (const Ring2& r : rings)
+        if (std::abs(SignedArea(IntersectConvex(cell, r))) > 1e-9 * size * size) ++covering;
+      if (covering >= 2) tiles.emplace_back(i * size, j * size, (i + 1) * size, (j + 1) * size);
+    }
+  return tiles;
+}
+
 std::string TileTag(const Eigen::Vector4d& aoi) {
   std::string tag = "t" + StrFormat("%.10g_%.10g", aoi[0], aoi[1]);
   for (char& c : tag)

@@ -12,6 +12,7 @@
 
 #include "algorithms/buildings/assemble_buildings.h"
 #include "algorithms/buildings/footprint.h"
+#include "algorithms/geometry/block_overview.h"
 #include "algorithms/geometry/block_window.h"
 #include "io/core/local_frame.h"
 
@@ -55,6 +56,14 @@ std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const Loc
 // configuration option ROOFSWEEP_MAX_MEMORY (GB) when set. The error names
 // -aoi: a tiled run reads only what sees its tile.
 void RequireMemoryForImages(long long pixels, int views, const std::string& source);
+
+// The tiles of a grid of `size` (block CRS units, aligned to multiples of
+// it, so that the grids of neighbouring blocks meet) that at least two
+// views' ground footprints cover in part (a stereo pair; footprints from
+// BlockOverview, local frame), as min x, min y, max x, max y, row by row
+// from the south-west.
+std::vector<Eigen::Vector4d> TileGrid(const std::vector<ViewFootprint>& footprints,
+                                      const LocalFrame& frame, double size);
 
 // "t<min x>_<min y>" of the tile, usable in an xs:ID.
 std::string TileTag(const Eigen::Vector4d& aoi);

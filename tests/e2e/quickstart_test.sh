@@ -30,6 +30,14 @@ test_tiles_example_runs() {
   run_example tiles tiles.sh t || return
   cp "$WORK/tiles.out" "$WORK/tout.txt"
   grep -Eq "^[0-9]+ tiles of 60 m" "$WORK/tout.txt" && pass tiles_grid || fail tiles_grid "$(head -3 "$WORK/tout.txt")"
+  # info -tiles: whole 60 m cells on multiples of 60, each once.
+  python3 - "$WORK/t/tiles.txt" <<'PY' && pass tiles_aligned || fail tiles_aligned "$(head -3 "$WORK/t/tiles.txt")"
+import sys
+cells = [tuple(map(float, l.split(","))) for l in open(sys.argv[1])]
+assert cells and len(set(cells)) == len(cells)
+assert all(c[2] - c[0] == 60 and c[3] - c[1] == 60 and c[0] % 60 == 0 and c[1] % 60 == 0 for c in cells)
+PY
+  expect_fail tiles_bad_size "" "positive tile size" -- info "$WORK/t/sim" -tiles 0
   # Every building of the gathered model comes from one tile: the ids say which.
   python3 - "$WORK/t/city.gml" <<'PY' && pass tiles_gathered || fail tiles_gathered "$(grep -c "<bldg:Building " "$WORK/t/city.gml")"
 import re, sys
