@@ -14,7 +14,7 @@ SIZE=${3:-60}
 mkdir -p "$W/out"
 
 # 1. A small simulated block; with real data, start from its block.json.
-"$RS" simulate -preset easy -seed 2 -size 768 -gsd 0.1 -strips 2 -views 3 -buildings 8 \
+"$RS" simulate -preset easy -seed 2 -size 512 -gsd 0.15 -strips 2 -views 3 -buildings 8 \
   -o "$W/sim" -overwrite -q
 
 # 2. The tiles of a grid that at least two images see, one
