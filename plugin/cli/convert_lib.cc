@@ -26,14 +26,12 @@ void PrependExisting(const std::string& path, const std::string& input, CityMode
                 "); -append needs one CRS");
   std::set<std::string> ids;
   for (const Building& b : existing.buildings) CollectIds(b, &ids);
-  for (const Building& b : model->buildings) {
-    std::set<std::string> mine;
-    CollectIds(b, &mine);
-    for (const std::string& id : mine)
-      if (ids.count(id))
-        throw Error(input + ": building " + id + " is in " + path +
-                    " already (the same tile appended twice?)");
-  }
+  std::set<std::string> mine;
+  for (const Building& b : model->buildings) CollectIds(b, &mine);
+  for (const std::string& id : mine)
+    if (ids.count(id))
+      throw Error(input + ": building " + id + " is in " + path +
+                  " already (the same tile appended twice?)");
   *before = static_cast<int>(existing.buildings.size());
   for (Building& b : model->buildings) existing.buildings.push_back(std::move(b));
   model->buildings = std::move(existing.buildings);

@@ -1,12 +1,9 @@
 #include <iostream>
 
-#include "algorithms/core/format.h"
 #include "io/core/block_manifest.h"
-#include "io/core/local_frame.h"
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/info_lib.h"
-#include "plugin/cli/tile_lib.h"
 
 namespace roofsweep::cli {
 namespace {
@@ -33,16 +30,7 @@ int Info(const std::vector<std::string>& args, Context&) {
     throw UsageError("Option -tiles expects a positive tile size", p.Synopsis());
   const BlockInfo info = RunInfo(block);
   if (tiles > 0) {
-    const std::vector<Eigen::Vector4d> grid =
-        TileGrid(info.overview.footprints, ManifestLocalFrame(info.manifest), tiles);
-    nlohmann::json a = nlohmann::json::array();
-    for (const Eigen::Vector4d& t : grid) {
-      if (json)
-        a.push_back({t[0], t[1], t[2], t[3]});
-      else
-        std::cout << StrFormat("%.10g,%.10g,%.10g,%.10g\n", t[0], t[1], t[2], t[3]);
-    }
-    if (json) std::cout << a.dump() << "\n";
+    std::cout << FormatTiles(info, tiles, json);
     return 0;
   }
   if (json) {

@@ -3,8 +3,11 @@
 #include <cstdio>
 #include <sstream>
 
+#include "algorithms/core/format.h"
 #include "algorithms/geometry/rotation.h"
+#include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
+#include "plugin/cli/tile_lib.h"
 
 namespace roofsweep {
 
@@ -137,6 +140,20 @@ nlohmann::json InfoToJson(const BlockInfo& info) {
   }
   j["warnings"] = o.warnings;
   return j;
+}
+
+std::string FormatTiles(const BlockInfo& info, double size, bool json) {
+  const std::vector<Eigen::Vector4d> grid =
+      TileGrid(info.overview.footprints, ManifestLocalFrame(info.manifest), size);
+  if (json) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const Eigen::Vector4d& t : grid) a.push_back({t[0], t[1], t[2], t[3]});
+    return a.dump() + "\n";
+  }
+  std::string out;
+  for (const Eigen::Vector4d& t : grid)
+    out += StrFormat("%.10g,%.10g,%.10g,%.10g\n", t[0], t[1], t[2], t[3]);
+  return out;
 }
 
 }  // namespace roofsweep

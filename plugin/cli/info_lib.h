@@ -22,4 +22,9 @@ BlockInfo RunInfo(const std::string& block);
 std::string FormatInfoText(const BlockInfo& info);
 nlohmann::json InfoToJson(const BlockInfo& info);
 
+// `info -tiles SIZE`: the tiles of the aligned SIZE grid that at least two
+// images see (TileGrid), one MINX,MINY,MAXX,MAXY per line, or with `json` a
+// JSON array of [minx, miny, maxx, maxy].
+std::string FormatTiles(const BlockInfo& info, double size, bool json);
+
 }  // namespace roofsweep

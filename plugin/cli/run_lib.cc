@@ -240,6 +240,23 @@ std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& ima
                    100 * fractions[fractions.size() / 2], 100 * fractions.front());
 }
 
+// Writes the model (block CRS coordinates) to the run's output, reprojected
+// to -t_srs when given. The solids were checked in metres by the assembly;
+// reprojecting to degrees afterwards keeps them closed and planar in the
+// target CRS's terms.
+void WriteRunOutput(CityModel model, const std::string& block_crs, const RunRequest& r) {
+  model.crs = block_crs;
+  if (!r.target_crs.empty()) {
+    if (model.crs.empty())
+      throw Error(r.block + ": the block has no CRS to reproject from (-t_srs)");
+    ReprojectCityModel(model, r.target_crs);
+  }
+  WriteOptions wo;
+  wo.format = r.format;
+  wo.overwrite = r.overwrite;
+  WriteCityModel(model, r.output, wo);
+}
+
 }  // namespace
 
 RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
@@ -279,12 +296,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     if (footprints.empty() && tile) {
       // A tile of parkland: the footprints say there is nothing to build.
       out.messages.push_back(footprint_path + ": no footprint in the tile or its buffer");
-      CityModel empty;
-      empty.crs = r.target_crs.empty() ? manifest.crs : r.target_crs;
-      WriteOptions wo;
-      wo.format = r.format;
-      wo.overwrite = r.overwrite;
-      WriteCityModel(empty, r.output, wo);
+      WriteRunOutput(CityModel(), manifest.crs, r);
       out.stages.push_back({"write", "0 buildings", Since(t0)});
       if (!r.report.empty()) WriteReport(r.report, out);
       progress.Update(1.0, "done");
@@ -296,11 +308,12 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                   "(a different CRS or area?)");
   }
   long long pixels = 0;
-  for (size_t v = 0; v < block.views.size(); ++v)
-    pixels += tile && v < tile->windows.size()
-                  ? tile->windows[v].Pixels()
-                  : static_cast<long long>(block.CameraOf(block.views[v]).width) *
-                        block.CameraOf(block.views[v]).height;
+  if (tile) {
+    pixels = tile->pixels_read;
+  } else {
+    for (const View& v : block.views)
+      pixels += static_cast<long long>(block.CameraOf(v).width) * block.CameraOf(v).height;
+  }
   RequireMemoryForImages(pixels, static_cast<int>(block.views.size()), r.block);
   std::vector<cv::Mat> images(block.views.size());
   tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
@@ -813,18 +826,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   t0 = Clock::now();
   CityModel model = std::move(assembled.model);
   model.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
-  model.crs = manifest.crs;
-  // The solids were checked in metres by the assembly; reprojecting to
-  // degrees afterwards keeps them closed and planar in the target CRS's terms.
-  if (!r.target_crs.empty()) {
-    if (model.crs.empty())
-      throw Error(r.block + ": the block has no CRS to reproject from (-t_srs)");
-    ReprojectCityModel(model, r.target_crs);
-  }
-  WriteOptions wo;
-  wo.format = r.format;
-  wo.overwrite = r.overwrite;
-  WriteCityModel(model, r.output, wo);
+  WriteRunOutput(std::move(model), manifest.crs, r);
   out.stages.push_back({"write", StrFormat("%d buildings", out.buildings), Since(t0)});
   if (!r.report.empty()) WriteReport(r.report, out);
   progress.Update(1.0, "done");

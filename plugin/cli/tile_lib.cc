@@ -116,13 +116,14 @@ TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source)
       const double g = block->ground.HeightAt(x, y);
       if (std::isfinite(g)) z_lo = std::min(z_lo, g), z_hi = std::max(z_hi, g);
     }
-  if (!std::isfinite(z_lo)) {
-    cut.message = "tile: no ground height under it; every image is read whole";
-    return cut;
-  }
   long long full = 0, read = 0;
   for (const View& v : block->views)
     full += static_cast<long long>(block->CameraOf(v).width) * block->CameraOf(v).height;
+  if (!std::isfinite(z_lo)) {
+    cut.message = "tile: no ground height under it; every image is read whole";
+    cut.pixels_read = full;
+    return cut;
+  }
   // A metre of slack below: a DTM interpolated between its posts.
   BlockWindows w = CropBlockToRegion(*block, cut.region, z_lo - 1.0,
                                      z_hi + block->max_building_height, kWindowMarginPx);
@@ -135,6 +136,7 @@ TileCut CutBlockToTile(Block* block, double buffer_m, const std::string& source)
                 w.block.views.size(), block->views.size(), buffer_m, read / 1e6, full / 1e6);
   *block = std::move(w.block);
   cut.windows = std::move(w.windows);
+  cut.pixels_read = read;
   return cut;
 }
 

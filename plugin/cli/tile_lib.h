@@ -24,6 +24,8 @@ struct TileCut {
   // Per view of the cut block, the window of its image to read; empty when
   // the block was not cut (no ground model to bound the heights).
   std::vector<PixelWindow> windows;
+  // Pixels the cut block's views read (windows, or whole images when not cut).
+  long long pixels_read = 0;
   std::string message;  // what was cut, for the log
 };
 
