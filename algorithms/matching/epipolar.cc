@@ -69,7 +69,7 @@ std::optional<Eigen::Vector2d> ProjectIdeal(const ViewFeatures& v, const Eigen::
   return Eigen::Vector2d(x.head<2>() / x.z());
 }
 
-std::optional<std::pair<double, double>> SceneHeightRange(const Block& block, double margin) {
+std::optional<SceneHeights> SceneHeightRange(const Block& block, double margin) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   if (block.ground.grid) {
     for (float z : block.ground.grid->z)
@@ -83,7 +83,33 @@ std::optional<std::pair<double, double>> SceneHeightRange(const Block& block, do
     hi = std::max(hi, *block.ground.height);
   }
   if (!std::isfinite(lo)) return std::nullopt;
-  return std::make_pair(lo - margin, hi + block.max_building_height + margin);
+  SceneHeights h;
+  h.lo = lo - margin;
+  h.hi = hi + block.max_building_height + margin;
+  h.ground = &block.ground;
+  h.above = block.max_building_height;
+  h.margin = margin;
+  return h;
+}
+
+bool SceneHeights::Contains(const Eigen::Vector3d& X) const {
+  if (!(X.z() >= lo && X.z() <= hi)) return false;
+  const double g = ground ? ground->HeightAt(X.x(), X.y()) : NAN;
+  return !std::isfinite(g) || (X.z() >= g - margin && X.z() <= g + above + margin);
+}
+
+bool SceneHeights::Clip(Segment3* s, double step_m) const {
+  if (Contains(s->a) && Contains(s->b)) return true;
+  const int n = std::max(1, static_cast<int>(std::ceil(s->Length() / step_m)));
+  auto at = [&](int i) -> Eigen::Vector3d { return s->a + (s->b - s->a) * (double(i) / n); };
+  int first = 0, last = n;
+  while (first <= n && !Contains(at(first))) ++first;
+  if (first > n) return false;
+  while (last > first && !Contains(at(last))) --last;
+  const Eigen::Vector3d a = at(first), b = at(last);
+  s->a = a;
+  s->b = b;
+  return true;
 }
 
 std::optional<Eigen::Vector2d> EpipolarTransfer(const PairGeometry& g, const Eigen::Vector2d& p,
@@ -94,9 +120,10 @@ std::optional<Eigen::Vector2d> EpipolarTransfer(const PairGeometry& g, const Eig
   return Eigen::Vector2d(x.head<2>() / x.z());
 }
 
-std::vector<PairHypothesis> GeometricCandidates(
-    const ViewFeatures& vi, const ViewFeatures& vj, int i_index, int j_index, const PairGeometry& g,
-    int si, const std::optional<std::pair<double, double>>& z_range, const MatchOptions& o) {
+std::vector<PairHypothesis> GeometricCandidates(const ViewFeatures& vi, const ViewFeatures& vj,
+                                                int i_index, int j_index, const PairGeometry& g,
+                                                int si, const std::optional<SceneHeights>& z_range,
+                                                const MatchOptions& o) {
   std::vector<PairHypothesis> out;
   const Segment2D& s = vi.ideal[si];
   const double len = s.Length();
@@ -110,7 +137,7 @@ std::vector<PairHypothesis> GeometricCandidates(
     bool ok = true;
     for (const Eigen::Vector2d& p : {s.p0, s.p1}) {
       const WorldRay r = RayThrough(vi, p);
-      for (double z : {z_range->first, z_range->second}) {
+      for (double z : {z_range->lo, z_range->hi}) {
         const auto X = IntersectPlane(r, Eigen::Vector4d(0, 0, 1, -z));
         const auto x = X ? ProjectIdeal(vj, *X) : std::nullopt;
         if (!X || (*X - r.origin).dot(r.direction) <= 0 || !x) {
@@ -172,7 +199,7 @@ std::vector<PairHypothesis> GeometricCandidates(
         ok = false;
         break;
       }
-      if (z_range && (Xk->z() < z_range->first || Xk->z() > z_range->second)) {
+      if (z_range && !z_range->Contains(*Xk)) {
         ok = false;
         break;
       }

@@ -63,7 +63,7 @@ std::optional<Eigen::Vector3d> Junction(const ViewFeatures& v, const Eigen::Vect
 
 JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
                                        const std::vector<Line3D>& lines,
-                                       const std::optional<std::pair<double, double>>& z_range,
+                                       const std::optional<SceneHeights>& z_range,
                                        const MatchOptions& o) {
   JunctionCompletion out;
   const int nv = static_cast<int>(views.size());
@@ -126,7 +126,7 @@ JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
     if (h.line.Length() < o.junction_min_length_m) return;
     if (z_range)
       for (const Eigen::Vector3d* p : {&h.line.a, &h.line.b})
-        if (p->z() < z_range->first || p->z() > z_range->second) return;
+        if (!z_range->Contains(*p)) return;
     h.support = SupportInViews(views, h.line, {h.view}, o);
     if (!h.support.Accepted(o)) return;
     // The corners themselves must be seen again: in some other view a

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/matching/epipolar.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/matching/match_options.h"
 #include "algorithms/matching/view_features.h"
@@ -47,7 +48,7 @@ struct JunctionCompletion {
 };
 JunctionCompletion CompleteAtJunctions(const std::vector<ViewFeatures>& views,
                                        const std::vector<Line3D>& lines,
-                                       const std::optional<std::pair<double, double>>& z_range,
+                                       const std::optional<SceneHeights>& z_range,
                                        const MatchOptions& options);
 
 }  // namespace roofsweep

@@ -462,6 +462,7 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     const LineEstimate est = TriangulateLine(obs, init);
     if (!est.valid || est.rms_px > o.max_residual) return false;
     line->segment = est.segment;
+    if (z_range && !z_range->Clip(&line->segment)) return false;
     line->rms_px = est.rms_px;
     line->observations = obs_keys;
     // Orient like the first observation.

@@ -93,6 +93,82 @@ TEST(EpipolarCandidates, StripAngleAndHeightRange) {
   EXPECT_TRUE(GeometricCandidates(w0, w1, 0, 1, MakePairGeometry(w0, w1), 0, z, o).empty());
 }
 
+// A hillside: the ground rises 1 m per metre eastwards, from z = -40 at
+// x = -40 to z = 40 at x = 40 (a 2 m DTM).
+Block HillsideBlock() {
+  Block b = TwoViewBlock();
+  b.ground.height.reset();
+  GroundModel::Grid g;
+  g.x0 = -40;
+  g.y0 = 40;
+  g.dx = g.dy = 2;
+  g.rows = g.cols = 40;
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.cols; ++c) g.z.push_back(static_cast<float>(g.x0 + (c + 0.5) * g.dx));
+  b.ground.grid = g;
+  return b;
+}
+
+TEST(EpipolarCandidates, HeightRangeFollowsTheGroundUnderThePoint) {
+  const Block b = HillsideBlock();  // max_building_height 20
+  MatchOptions o;
+  const auto z = SceneHeightRange(b, o.height_margin_m);
+  ASSERT_TRUE(z);
+  // Block-wide: the lowest ground less the margin up to the highest plus 20.
+  EXPECT_NEAR(z->lo, -39 - 3, 1e-9);
+  EXPECT_NEAR(z->hi, 39 + 20 + 3, 1e-9);
+  // A roof 10 m above the slope, and the ground itself, are scene points...
+  EXPECT_TRUE(z->Contains({-20, 0, -10}));
+  EXPECT_TRUE(z->Contains({20, 0, 20}));
+  EXPECT_TRUE(z->Contains({20, 0, 18}));
+  // ... a point 30 m above the ground on the low side, within the block's
+  // range, is not; nor is one 10 m under the ground on the high side.
+  EXPECT_FALSE(z->Contains({-20, 0, 10}));
+  EXPECT_FALSE(z->Contains({20, 0, 10}));
+
+  // An edge 5 m above the ground at x = -10 (running north, across the
+  // epipolar lines), and a segment of view 1 that would put it 30 m higher:
+  // inside the block-wide range, but 35 m above the ground there.
+  const Eigen::Vector3d A(-10, -5, -5), B(-10, 5, -5);
+  const Segments2D s0 = {ProjectSeg(b, 0, A, B)};
+  const Eigen::Vector3d C0 = b.views[0].pose.C;
+  auto along_ray = [&](const Eigen::Vector3d& P, double height) -> Eigen::Vector3d {
+    return C0 + (P - C0) * ((height - C0.z()) / (P.z() - C0.z()));
+  };
+  const Segments2D s1 = {ProjectSeg(b, 1, A, B),
+                         ProjectSeg(b, 1, along_ray(A, 25), along_ray(B, 25))};
+  const cv::Mat blank(1000, 1000, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
+  const ViewFeatures v0 = PrepareView(b, 0, blank, s0, o);
+  const ViewFeatures v1 = PrepareView(b, 1, blank, s1, o);
+  const PairGeometry g = MakePairGeometry(v0, v1);
+  ASSERT_TRUE(g.valid);
+  std::vector<int> ids;
+  for (const auto& h : GeometricCandidates(v0, v1, 0, 1, g, 0, z, o)) ids.push_back(h.sj);
+  EXPECT_EQ(ids, (std::vector<int>{0}));
+}
+
+TEST(EpipolarCandidates, LinesAreCutToTheSceneHeights) {
+  const Block b = HillsideBlock();
+  const auto z = SceneHeightRange(b, 3.0);
+  ASSERT_TRUE(z);
+  // A line at z = 0 from x = -30 to x = 30: under the ground beyond x = 3,
+  // more than 23 m above it before x = -23.
+  Segment3 s{{-30, 0, 0}, {30, 0, 0}};
+  ASSERT_TRUE(z->Clip(&s));
+  EXPECT_NEAR(s.a.x(), -23, 0.26);
+  EXPECT_NEAR(s.b.x(), 3, 0.26);
+  EXPECT_TRUE(z->Contains(s.a));
+  EXPECT_TRUE(z->Contains(s.b));
+  // A line inside is left exactly as it is; one wholly outside is refused.
+  Segment3 in{{-10, 0, -5}, {10, 3, 15}};
+  const Segment3 before = in;
+  ASSERT_TRUE(z->Clip(&in));
+  EXPECT_EQ(in.a, before.a);
+  EXPECT_EQ(in.b, before.b);
+  Segment3 under{{-10, 0, -30}, {10, 0, -20}};
+  EXPECT_FALSE(z->Clip(&under));
+}
+
 TEST(EpipolarCandidates, IdenticalViewsHaveNoGeometry) {
   Block b = TwoViewBlock();
   b.views[1].pose = b.views[0].pose;
