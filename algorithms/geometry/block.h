@@ -46,6 +46,10 @@ struct Block {
   std::vector<Camera> cameras;
   std::vector<View> views;
   GroundModel ground;
+  // The surface model (DSM) the ground was derived from, when the block
+  // gives one (manifest ground/dsm): not used by the reconstruction, only to
+  // check its 3D lines on real blocks (eval::LinesOnSurface).
+  std::optional<GroundModel::Grid> surface;
   double max_building_height = 60.0;  // m above ground; bounds disparities
   std::string footprints_path;        // optional OGR dataset
   std::string footprints_layer;

@@ -256,8 +256,10 @@ Block ManifestToBlock(const BlockManifest& m) {
                           std::min(box[2], hi.x()), std::min(box[3], hi.y()));
     try {
       block.ground.grid = ResampleDtm(*dtm, frame, box);
-      if (!m.dsm.empty())
-        block.ground.grid = TerrainFromSurfaceModel(*block.ground.grid, m.terrain_window_m);
+      if (!m.dsm.empty()) {
+        block.surface = block.ground.grid;
+        block.ground.grid = TerrainFromSurfaceModel(*block.surface, m.terrain_window_m);
+      }
     } catch (const Error& e) {
       throw Error(Where(m) + (m.dsm.empty() ? ": /ground/dtm: " : ": /ground/dsm: ") + e.what());
     }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "algorithms/core/error.h"
+#include "algorithms/core/format.h"
 #include "algorithms/eval/line_eval.h"
 #include "algorithms/geometry/view.h"
 #include "io/citymodel/ogr_citymodel.h"
@@ -74,6 +75,30 @@ eval::MatchScores ScoreAgainstVgg(const orientation::VggLineAnnotations& a, cons
 
 }  // namespace
 
+eval::SurfaceAgreement LinesOnSurfaceModel(const Block& block, const std::vector<Line3D>& lines) {
+  std::vector<Segment3> segments;
+  std::vector<int> views;
+  for (const Line3D& l : lines) {
+    segments.push_back(l.segment);
+    views.push_back(l.Views());
+  }
+  return eval::LinesOnSurface(segments, views, *block.surface);
+}
+
+std::string FormatSurfaceAgreement(const eval::SurfaceAgreement& a) {
+  const eval::SurfaceAgreementOptions o;
+  std::string out = StrFormat("3D lines on the surface model (within %.0f m):", o.tolerance_m);
+  const char* kinds[2] = {"two views", "three or more"};
+  for (int k = 0; k < 2; ++k) {
+    if (k > 0) out += ";";
+    out += a.length_m[k] > 0
+               ? StrFormat(" %s %.1f%% of %.0f m (%d lines)", kinds[k],
+                           100 * a.agreeing_m[k] / a.length_m[k], a.length_m[k], a.lines[k])
+               : StrFormat(" %s none", kinds[k]);
+  }
+  return out + "\n";
+}
+
 MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   MatchSummary out;
   if (r.output.empty()) throw Error("match: no output file given (-o)");
@@ -123,6 +148,7 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   out.result = MatchLines(block, images, r.match, r.edges, sub,
                           r.truth.empty() || vgg ? nullptr : &truth_local);
   if (vgg) out.annotated = ScoreAgainstVgg(*vgg, block, frame, out.result, r.truth);
+  if (block.surface) out.surface = LinesOnSurfaceModel(block, out.result.lines);
 
   if (!r.truth.empty() && !vgg) {
     std::vector<Segment3> lines, roof, extra;
@@ -197,6 +223,7 @@ std::string FormatMatchSummary(const MatchSummary& s) {
                   pct(s.precision), pct(s.completeness), pct(s.roof_edge_completeness));
     o << buf;
   }
+  if (s.surface) o << FormatSurfaceAgreement(*s.surface);
   if (s.roof_edge_m > 0) {
     const double other = std::max(
         0.0, s.roof_edge_m - s.roof_reachable_m - s.roof_along_epipolar_m - s.roof_one_view_m);

@@ -6,6 +6,7 @@
 
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
+#include "algorithms/eval/line_surface.h"
 #include "algorithms/eval/match_eval.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/matching/match_options.h"
@@ -43,6 +44,8 @@ struct MatchSummary {
   double roof_edge_m = 0, roof_reachable_m = 0, roof_along_epipolar_m = 0, roof_one_view_m = 0;
   // With a VGG set as truth.
   std::optional<eval::MatchScores> annotated;
+  // When the block has a surface model (ground/dsm): the 3D lines against it.
+  std::optional<eval::SurfaceAgreement> surface;
 };
 
 // `roofsweep match`: reads the block and its images, extracts segments,
@@ -54,6 +57,11 @@ struct MatchSummary {
 MatchSummary RunMatch(const MatchRequest& request, Progress& progress);
 
 std::string FormatMatchSummary(const MatchSummary& summary);
+
+// The lines against the block's surface model (block.surface must be set),
+// and that figure as one line of the summaries of `match` and `run`.
+eval::SurfaceAgreement LinesOnSurfaceModel(const Block& block, const std::vector<Line3D>& lines);
+std::string FormatSurfaceAgreement(const eval::SurfaceAgreement& agreement);
 
 // One feature of the lines3d layer, as `match` and `run -lines3d` write it:
 // the line from a to b (output coordinates) with views, rms_px, length_m,
