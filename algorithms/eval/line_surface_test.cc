@@ -2,23 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include "algorithms/geometry/test_blocks.h"
+
 namespace roofsweep::eval {
 namespace {
 
 // A 1 m surface model over x, y in [0, 40): ground at 0, a 10 m block over
 // x, y in [10, 20).
 GroundModel::Grid BoxSurface() {
-  GroundModel::Grid g;
-  g.x0 = 0;
-  g.y0 = 40;
-  g.dx = g.dy = 1;
-  g.rows = g.cols = 40;
-  for (int r = 0; r < g.rows; ++r)
-    for (int c = 0; c < g.cols; ++c) {
-      const double x = c + 0.5, y = g.y0 - (r + 0.5);
-      g.z.push_back(x >= 10 && x < 20 && y >= 10 && y < 20 ? 10.f : 0.f);
-    }
-  return g;
+  return SampledGrid(0, 40, 1, 40, 40, [](double x, double y) {
+    return x >= 10 && x < 20 && y >= 10 && y < 20 ? 10.0 : 0.0;
+  });
 }
 
 TEST(LinesOnSurface, EdgesOnTheStepAgreeAndLinesInTheAirDoNot) {

@@ -7,24 +7,15 @@
 #include <vector>
 
 #include "algorithms/core/error.h"
+#include "algorithms/geometry/test_blocks.h"
 
 namespace roofsweep {
 namespace {
 
 // 100 x 100 m at 0.5 m: a slope rising 5 % to the east and 2 % to the north.
 GroundModel::Grid Slope() {
-  GroundModel::Grid g;
-  g.x0 = 0;
-  g.y0 = 100;
-  g.dx = g.dy = 0.5;
-  g.rows = g.cols = 200;
-  g.z.resize(200 * 200);
-  for (int r = 0; r < g.rows; ++r)
-    for (int c = 0; c < g.cols; ++c) {
-      const double x = g.x0 + (c + 0.5) * g.dx, y = g.y0 - (r + 0.5) * g.dy;
-      g.z[r * g.cols + c] = static_cast<float>(50 + 0.05 * x + 0.02 * y);
-    }
-  return g;
+  return SampledGrid(0, 100, 0.5, 200, 200,
+                     [](double x, double y) { return 50 + 0.05 * x + 0.02 * y; });
 }
 
 double X(const GroundModel::Grid& g, int c) { return g.x0 + (c + 0.5) * g.dx; }

@@ -3,6 +3,7 @@
 // Synthetic blocks for tests.
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/geometry/block.h"
@@ -33,6 +34,24 @@ inline Block NadirTestBlock(const std::vector<Eigen::Vector3d>& centres,
   b.ground.height = 0;
   b.max_building_height = 20;
   return b;
+}
+
+// A square-celled grid whose north-west corner is (x0, y0), holding
+// height(x, y) at every cell centre: DTMs and DSMs for tests.
+template <class HeightFn>
+GroundModel::Grid SampledGrid(double x0, double y0, double cell, int rows, int cols,
+                              HeightFn&& height) {
+  GroundModel::Grid g;
+  g.x0 = x0;
+  g.y0 = y0;
+  g.dx = g.dy = cell;
+  g.rows = rows;
+  g.cols = cols;
+  g.z.reserve(static_cast<size_t>(rows) * cols);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      g.z.push_back(static_cast<float>(height(x0 + (c + 0.5) * cell, y0 - (r + 0.5) * cell)));
+  return g;
 }
 
 }  // namespace roofsweep

@@ -98,14 +98,7 @@ TEST(EpipolarCandidates, StripAngleAndHeightRange) {
 Block HillsideBlock() {
   Block b = TwoViewBlock();
   b.ground.height.reset();
-  GroundModel::Grid g;
-  g.x0 = -40;
-  g.y0 = 40;
-  g.dx = g.dy = 2;
-  g.rows = g.cols = 40;
-  for (int r = 0; r < g.rows; ++r)
-    for (int c = 0; c < g.cols; ++c) g.z.push_back(static_cast<float>(g.x0 + (c + 0.5) * g.dx));
-  b.ground.grid = g;
+  b.ground.grid = SampledGrid(-40, 40, 2, 40, 40, [](double x, double) { return x; });
   return b;
 }
 

@@ -96,7 +96,7 @@ std::string FormatSurfaceAgreement(const eval::SurfaceAgreement& a) {
                            100 * a.agreeing_m[k] / a.length_m[k], a.length_m[k], a.lines[k])
                : StrFormat(" %s none", kinds[k]);
   }
-  return out + "\n";
+  return out;
 }
 
 MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
@@ -223,7 +223,7 @@ std::string FormatMatchSummary(const MatchSummary& s) {
                   pct(s.precision), pct(s.completeness), pct(s.roof_edge_completeness));
     o << buf;
   }
-  if (s.surface) o << FormatSurfaceAgreement(*s.surface);
+  if (s.surface) o << FormatSurfaceAgreement(*s.surface) << "\n";
   if (s.roof_edge_m > 0) {
     const double other = std::max(
         0.0, s.roof_edge_m - s.roof_reachable_m - s.roof_along_epipolar_m - s.roof_one_view_m);

@@ -59,7 +59,8 @@ MatchSummary RunMatch(const MatchRequest& request, Progress& progress);
 std::string FormatMatchSummary(const MatchSummary& summary);
 
 // The lines against the block's surface model (block.surface must be set),
-// and that figure as one line of the summaries of `match` and `run`.
+// and that figure as one line (without its newline) of the summaries of
+// `match` and `run`.
 eval::SurfaceAgreement LinesOnSurfaceModel(const Block& block, const std::vector<Line3D>& lines);
 std::string FormatSurfaceAgreement(const eval::SurfaceAgreement& agreement);
 

@@ -337,11 +337,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     SubProgress match_progress(progress, 0.0, 0.35);
     matched = MatchLines(block, images, r.match, r.edges, match_progress, nullptr);
     out.messages.insert(out.messages.end(), matched.messages.begin(), matched.messages.end());
-    if (block.surface) {
-      std::string m = FormatSurfaceAgreement(LinesOnSurfaceModel(block, matched.lines));
-      m.pop_back();  // the newline
-      out.messages.push_back(m);
-    }
+    if (block.surface)
+      out.messages.push_back(FormatSurfaceAgreement(LinesOnSurfaceModel(block, matched.lines)));
     out.stages.push_back(
         {"segments + 3D lines",
          StrFormat("%lld segments, %zu 3D lines", matched.funnel.segments, matched.lines.size()),
