@@ -53,10 +53,12 @@ simulate() {
 }
 export -f simulate
 export RS_A
-printf '%s\n' "${BLOCK_LIST[@]}" | xargs -P "$JOBS" -I{} bash -c 'simulate "$@"' _ {}
+printf '%s\0' "${BLOCK_LIST[@]}" | xargs -0 -P "$JOBS" -n 1 bash -c 'simulate "$@"' _
 
-# One job per line: PROGRAM LINES_DIR BLOCK SEED. Written to a temporary
-# name first, so that an interrupted comparison does not reuse half a file.
+# Jobs are fed to xargs NUL-separated, so that paths may hold spaces.
+# Outputs are written to a temporary name first, so that an interrupted
+# comparison does not reuse half a file.
+# PROGRAM LINES_DIR BLOCK SEED
 match_job() {
   local rs=$1 dir=$2 b=$3 s=$4 f="$2/$3-s$4.gpkg"
   [[ -f $f ]] && return
@@ -85,11 +87,11 @@ fi
 {
   for b in "${BLOCK_LIST[@]}"; do
     for s in "${SEEDS[@]}"; do
-      echo "$RS_A $LINES_A $b $s"
-      [[ $LINES_B == "$LINES_A" ]] || echo "$RS_B $LINES_B $b $s"
+      printf '%s\0%s\0%s\0%s\0' "$RS_A" "$LINES_A" "$b" "$s"
+      [[ $LINES_B == "$LINES_A" ]] || printf '%s\0%s\0%s\0%s\0' "$RS_B" "$LINES_B" "$b" "$s"
     done
   done
-} | xargs -P "$JOBS" -L 1 bash -c 'match_job "$@"' _
+} | xargs -0 -P "$JOBS" -n 4 bash -c 'match_job "$@"' _
 
 jobs_file=$(mktemp)
 trap 'rm -f "$jobs_file"' EXIT
