@@ -247,6 +247,10 @@ struct Renderer::Impl {
     terrain.kind = FaceKind::kTerrain;
     terrain.normal = V3::UnitZ();
     terrain.d = -scene.ground.z;
+    if (!scene.ground.slope.isZero()) {
+      terrain.normal = V3(-scene.ground.slope.x(), -scene.ground.slope.y(), 1).normalized();
+      terrain.d = -terrain.normal.z() * scene.ground.z;
+    }
     terrain.material = scene.ground.base_material;
     faces.push_back(terrain);
     ground_seed = static_cast<uint32_t>(scene.materials.empty() ? 1 : scene.materials[0].seed);
@@ -286,7 +290,9 @@ struct Renderer::Impl {
 
   Hit Trace(const V3& o, const V3& d) const {
     Hit h;
-    const double t_ground = d.z() < 0 ? (scene.ground.z - o.z()) / d.z() : kInf;
+    const FaceInfo& terrain = faces[0];
+    const double den = terrain.normal.dot(d);
+    const double t_ground = den < 0 ? -(terrain.normal.dot(o) + terrain.d) / den : kInf;
     Bvh::Hit bh;
     const float t_max = static_cast<float>(std::min(t_ground * 1.0001 + 0.01, 1e7));
     if (bvh.Intersect(o.cast<float>(), d.cast<float>(), 0.0f, t_max, &bh)) {
@@ -307,7 +313,7 @@ struct Renderer::Impl {
       h.face = 0;
       h.t = t_ground;
       h.p = o + t_ground * d;
-      h.p.z() = scene.ground.z;
+      h.p.z() = scene.ground.HeightAt(h.p.head<2>());
     }
     return h;
   }

@@ -340,6 +340,34 @@ TEST(Renderer, DepthAndFaceMapsMatchTheScene) {
   EXPECT_GT(checked, 10);
 }
 
+// On a slope the terrain seen in every pixel lies at the slope's height
+// there: flat terrain at the origin's height would be off by up to 4 m at
+// the image corners of this view.
+TEST(Renderer, TerrainFollowsTheSlope) {
+  SceneOptions so;
+  so.extent_x = so.extent_y = 80;
+  so.building_count = 4;
+  so.ground_slope = Eigen::Vector2d(0.06, -0.05);
+  const Scene scene = GenerateScene(so, 5);
+  const Renderer renderer(scene, RenderOptions{});
+  const Camera cam = TestCamera(256, 300);
+  const Pose pose{LookDown(20, 10, -5), V3(4, -3, 90)};
+  const GeometryMaps m = renderer.RenderGeometry(cam, pose);
+  int checked = 0;
+  double worst = 0;
+  for (int y = 0; y < cam.height; y += 7)
+    for (int x = 0; x < cam.width; x += 7) {
+      if (m.face.at<int>(y, x) != 0) continue;  // face 0: the terrain
+      const double depth = m.depth.at<float>(y, x);
+      const V3 ray((x + 0.5 - cam.cx) / cam.fx, (y + 0.5 - cam.cy) / cam.fy, 1);
+      const V3 X = pose.C + pose.R.transpose() * (depth * ray);
+      worst = std::max(worst, std::abs(X.z() - scene.ground.HeightAt(X.head<2>())));
+      ++checked;
+    }
+  EXPECT_GT(checked, 300);
+  EXPECT_LT(worst, 0.02);
+}
+
 }  // namespace
 }  // namespace sim
 }  // namespace roofsweep

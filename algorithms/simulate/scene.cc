@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "algorithms/core/error.h"
@@ -234,7 +235,7 @@ void AddTrees(Scene& scene, const SceneOptions& o, const std::vector<Rect>& bloc
     for (const Tree& other : scene.trees)
       ok = ok && (other.base.head<2>() - p).norm() > 0.8 * (other.crown_radius + t.crown_radius);
     if (!ok) continue;
-    t.base = V3(p.x(), p.y(), scene.ground.z);
+    t.base = V3(p.x(), p.y(), scene.ground.HeightAt(p));
     t.material = rng.Chance(0.7) ? kFoliage0 : kFoliage1;
     t.seed = static_cast<uint32_t>(rng.Next());
     scene.trees.push_back(t);
@@ -296,9 +297,18 @@ Prop BoxProp(PropKind kind, const V2& c, const V2& dir, double len, double wid, 
   return p;
 }
 
+// Where a box of plan size len x wid (long side along `dir`) centred at c
+// stands: on its lowest corner, so that on a slope it never floats.
+double LowestGround(const GroundLayout& g, const V2& c, const V2& dir, double len, double wid) {
+  const V2 across(-dir.y(), dir.x());
+  return g.HeightAt(c) - std::abs(g.slope.dot(dir)) * len / 2 -
+         std::abs(g.slope.dot(across)) * wid / 2;
+}
+
 // A car: body plus glass cabin, 4.0-4.8 m long.
-void AddCar(std::vector<Prop>& props, const V2& c, const V2& dir, double z, Rng& rng) {
+void AddCar(std::vector<Prop>& props, const V2& c, const V2& dir, const GroundLayout& g, Rng& rng) {
   const double len = rng.Uniform(3.9, 4.8), wid = rng.Uniform(1.7, 1.85);
+  const double z = LowestGround(g, c, dir, len, wid);
   const int colour = kCar0 + rng.Int(0, CarMaterialCount() - 1);
   const uint32_t seed = static_cast<uint32_t>(rng.Next());
   props.push_back(BoxProp(PropKind::kCar, c, dir, len, wid, z + 0.2, 0.75, colour, seed));
@@ -306,24 +316,25 @@ void AddCar(std::vector<Prop>& props, const V2& c, const V2& dir, double z, Rng&
                           0.5, kGlass, seed + 1));
 }
 
-void AddHedge(LotPlan& lot, const Row& r, double s0, double s1, double t0, double t1, double z,
-              Rng& rng) {
+void AddHedge(LotPlan& lot, const Row& r, double s0, double s1, double t0, double t1,
+              const GroundLayout& g, Rng& rng) {
   const double h = rng.Uniform(0.9, 1.8);
   const bool along = std::abs(s1 - s0) >= std::abs(t1 - t0);
   const V2 dir = along ? r.along : r.inward;
   const double len = along ? std::abs(s1 - s0) : std::abs(t1 - t0);
   const double wid = along ? std::abs(t1 - t0) : std::abs(s1 - s0);
   if (len < 1) return;
-  lot.props.push_back(BoxProp(PropKind::kHedge, r.At(0.5 * (s0 + s1), 0.5 * (t0 + t1)), dir, len,
-                              wid, z, h, kHedge, static_cast<uint32_t>(rng.Next())));
+  const V2 c = r.At(0.5 * (s0 + s1), 0.5 * (t0 + t1));
+  lot.props.push_back(BoxProp(PropKind::kHedge, c, dir, len, wid, LowestGround(g, c, dir, len, wid),
+                              h, kHedge, static_cast<uint32_t>(rng.Next())));
 }
 
-Tree RandomTree(const V2& p, double z, double rmin, double rmax, Rng& rng) {
+Tree RandomTree(const V2& p, const GroundLayout& g, double rmin, double rmax, Rng& rng) {
   Tree t;
   t.crown_radius = rng.Uniform(rmin, rmax);
   t.trunk_height = rng.Uniform(1.5, 4.0);
   t.crown_height = t.crown_radius * rng.Uniform(1.3, 2.2);
-  t.base = V3(p.x(), p.y(), z);
+  t.base = V3(p.x(), p.y(), g.HeightAt(p));
   t.material = rng.Chance(0.7) ? kFoliage0 : kFoliage1;
   t.seed = static_cast<uint32_t>(rng.Next());
   return t;
@@ -375,7 +386,12 @@ class TownBuilder {
                                              static_cast<uint32_t>(rng_.Next())));
   }
   void Push(LotPlan& lot, BuildingSpec b, int roof = -1, int wall = -1) {
-    b.ground_z = o_.ground_z;
+    // On a slope the building stands on the lowest ground under it, as a
+    // house with its downhill basement wall showing.
+    b.ground_z = std::numeric_limits<double>::infinity();
+    for (const Rect& rect : FootprintRects(b))
+      for (const V2& c : rect.Corners())
+        b.ground_z = std::min(b.ground_z, scene_.ground.HeightAt(c));
     const bool flat = b.shape == RoofShape::kFlat;
     lot.buildings.push_back({b, roof >= 0 ? roof : Roof(flat), wall >= 0 ? wall : Wall()});
   }
@@ -397,7 +413,8 @@ class TownBuilder {
 
   LotPlan Detached(const Row& r, double s0, double s1) {
     LotPlan lot;
-    const double w = s1 - s0, D = r.depth, z = o_.ground_z;
+    const double w = s1 - s0, D = r.depth;
+    const GroundLayout& ground = scene_.ground;
     lot.centre = r.At(0.5 * (s0 + s1), 0.5 * D);
     const double front = rng_.Uniform(2.5, 5.5), side = rng_.Uniform(1.0, 2.2);
     const bool garage = o_.clutter && rng_.Chance(0.55) && w > 14.5;
@@ -442,7 +459,7 @@ class TownBuilder {
       const double gs = s1 - side - garage_w / 2, dep = rng_.Uniform(5.5, 6.5);
       Outbuilding(lot, r, gs, front + 1 + dep / 2, garage_w, dep, true);
       lot.regions.push_back(r.Region(gs - 1.6, gs + 1.6, 0, front + 1, kPaving));
-      if (rng_.Chance(0.6)) AddCar(lot.props, r.At(gs, 0.5 + 0.5 * front), r.inward, z, rng_);
+      if (rng_.Chance(0.6)) AddCar(lot.props, r.At(gs, 0.5 + 0.5 * front), r.inward, ground, rng_);
     } else if (rng_.Chance(0.5)) {
       const double len = rng_.Uniform(2.2, 3.2), dep = rng_.Uniform(2.2, 3.2);
       const double ss = s0 + 1.0 + len / 2 + rng_.Uniform(0, w - 2.0 - len);
@@ -453,32 +470,37 @@ class TownBuilder {
       const double ds = sc + along_len / 2 + 2.0;
       if (ds + 1.5 < s1) {
         lot.regions.push_back(r.Region(ds - 1.5, ds + 1.5, 0, front + 4, kPaving));
-        if (rng_.Chance(0.7)) AddCar(lot.props, r.At(ds, front), r.inward, z, rng_);
+        if (rng_.Chance(0.7)) AddCar(lot.props, r.At(ds, front), r.inward, ground, rng_);
       }
     }
     if (rng_.Chance(0.5)) {  // front hedge with a gap for the path
-      AddHedge(lot, r, s0 + 0.3, sc - 1.0, 0.2, 0.9, z, rng_);
-      if (!garage) AddHedge(lot, r, sc + 1.0, s1 - 0.3, 0.2, 0.9, z, rng_);
+      AddHedge(lot, r, s0 + 0.3, sc - 1.0, 0.2, 0.9, ground, rng_);
+      if (!garage) AddHedge(lot, r, sc + 1.0, s1 - 0.3, 0.2, 0.9, ground, rng_);
     }
-    if (rng_.Chance(0.4)) AddHedge(lot, r, s1 - 0.7, s1, front + in_len, D - 0.3, z, rng_);
+    if (rng_.Chance(0.4)) AddHedge(lot, r, s1 - 0.7, s1, front + in_len, D - 0.3, ground, rng_);
     // Garden fences on the side and back boundaries.
-    if (rng_.Chance(0.6))
-      lot.props.push_back(BoxProp(PropKind::kHedge, r.At(s0 + 0.05, 0.5 * (front + D)), r.inward,
-                                  D - front, 0.08, z, rng_.Uniform(1.0, 1.8), kBark,
+    if (rng_.Chance(0.6)) {
+      const V2 c = r.At(s0 + 0.05, 0.5 * (front + D));
+      lot.props.push_back(BoxProp(PropKind::kHedge, c, r.inward, D - front, 0.08,
+                                  LowestGround(ground, c, r.inward, D - front, 0.08),
+                                  rng_.Uniform(1.0, 1.8), kBark,
                                   static_cast<uint32_t>(rng_.Next())));
-    if (rng_.Chance(0.6))
-      lot.props.push_back(BoxProp(PropKind::kHedge, r.At(0.5 * (s0 + s1), D - 0.05), r.along, w,
-                                  0.08, z, rng_.Uniform(1.0, 1.8), kBark,
-                                  static_cast<uint32_t>(rng_.Next())));
+    }
+    if (rng_.Chance(0.6)) {
+      const V2 c = r.At(0.5 * (s0 + s1), D - 0.05);
+      lot.props.push_back(BoxProp(PropKind::kHedge, c, r.along, w, 0.08,
+                                  LowestGround(ground, c, r.along, w, 0.08), rng_.Uniform(1.0, 1.8),
+                                  kBark, static_cast<uint32_t>(rng_.Next())));
+    }
     for (int k = 0; k < 2; ++k)
       if (rng_.Chance(k == 0 ? 0.7 : 0.35))
         lot.trees.push_back(RandomTree(
-            r.At(rng_.Uniform(s0 + 2, s1 - 2), rng_.Uniform(front + in_len + 1.5, D - 1.0)), z, 1.6,
-            4.8, rng_));
+            r.At(rng_.Uniform(s0 + 2, s1 - 2), rng_.Uniform(front + in_len + 1.5, D - 1.0)), ground,
+            1.6, 4.8, rng_));
     // Front-garden shrub or small tree close to the facade (overhangs eaves).
     if (rng_.Chance(0.25))
       lot.trees.push_back(
-          RandomTree(r.At(rng_.Uniform(s0 + 1.5, s1 - 1.5), front - 0.5), z, 1.2, 2.5, rng_));
+          RandomTree(r.At(rng_.Uniform(s0 + 1.5, s1 - 1.5), front - 0.5), ground, 1.2, 2.5, rng_));
     return lot;
   }
 
@@ -516,7 +538,7 @@ class TownBuilder {
             lot.regions.push_back(r.Region(x + 0.3, x + uw / 2 - 0.8, 0.4, front - 0.3, kSoil));
           if (rng_.Chance(0.6))
             AddHedge(lot, r, x + uw - 0.2, x + uw + 0.2, front + depth + 0.5, r.depth - 0.5,
-                     o_.ground_z, rng_);
+                     scene_.ground, rng_);
           if (rng_.Chance(0.5))
             lot.regions.push_back(
                 r.Region(x + 0.5, x + uw - 0.5, front + depth, front + depth + 2.5, kPaving));
@@ -525,7 +547,7 @@ class TownBuilder {
           if (rng_.Chance(0.25))
             lot.trees.push_back(
                 RandomTree(r.At(x + uw / 2, rng_.Uniform(front + depth + 3, r.depth - 1)),
-                           o_.ground_z, 1.5, 3.5, rng_));
+                           scene_.ground, 1.5, 3.5, rng_));
         }
         x += uw;
       }
@@ -567,7 +589,7 @@ class TownBuilder {
           for (double bs = s + 0.5; bs + 2.5 < s + len; bs += 2.5) {
             lot.regions.push_back(r.Region(bs - 0.06, bs + 0.06, p1 - 5, p1, kPaint));
             if (rng_.Chance(0.65))
-              AddCar(lot.props, r.At(bs + 1.25, p1 - 2.5), r.inward, o_.ground_z, rng_);
+              AddCar(lot.props, r.At(bs + 1.25, p1 - 2.5), r.inward, scene_.ground, rng_);
           }
         }
       }
@@ -614,7 +636,7 @@ class TownBuilder {
         if (r.depth - dep > 14) Outbuilding(lot, r, g + 1.5, r.depth - 3.5, 3.0, 6.0, true);
       if (rng_.Chance(0.7))
         lot.trees.push_back(
-            RandomTree(r.At(rng_.Uniform(3, x - 3), dep + 4), o_.ground_z, 2.5, 5.0, rng_));
+            RandomTree(r.At(rng_.Uniform(3, x - 3), dep + 4), scene_.ground, 2.5, 5.0, rng_));
     }
     lots.push_back(std::move(lot));
     return lots;
@@ -647,7 +669,7 @@ class TownBuilder {
         for (double bs = s + 0.5; bs + 2.5 < s + len; bs += 2.5) {
           lot.regions.push_back(r.Region(bs - 0.06, bs + 0.06, 0.5, 5.5, kPaint));
           if (rng_.Chance(0.55))
-            AddCar(lot.props, r.At(bs + 1.25, 3.0), r.inward, o_.ground_z, rng_);
+            AddCar(lot.props, r.At(bs + 1.25, 3.0), r.inward, scene_.ground, rng_);
         }
       }
       lots.push_back(std::move(lot));
@@ -830,9 +852,12 @@ Scene GenerateScene(const SceneOptions& o, uint64_t seed) {
     throw Error("simulate: building length range must satisfy 3 <= min <= max");
   if (!(o.street_spacing > 20 && o.block_length > 20))
     throw Error("simulate: street_spacing and block_length must be > 20 m");
+  if (!o.ground_slope.allFinite() || o.ground_slope.norm() > 0.5)
+    throw Error("simulate: the ground slope must be at most 50 %");
   Scene scene;
   AddBaseMaterials(scene, seed);
   scene.ground.z = o.ground_z;
+  scene.ground.slope = o.ground_slope;
   const double ex = o.extent_x / 2, ey = o.extent_y / 2;
   scene.area << -ex, -ey, ex, ey;
   Rng rng(Hash(seed, 0x5ce7e));
@@ -909,17 +934,17 @@ Scene GenerateScene(const SceneOptions& o, uint64_t seed) {
       for (double t = -lim; t < lim; t += 6.0)
         if (!near_cross(t, cross, 6.0) && rng.Chance(0.22))
           AddCar(street_props, t * ax + (pos + side * (half_street - 1.25)) * n,
-                 rng.Chance(0.5) ? V2(ax) : V2(-ax), o.ground_z, rng);
+                 rng.Chance(0.5) ? V2(ax) : V2(-ax), scene.ground, rng);
       for (double t = -lim; t < lim; t += 11.0)
         if (!near_cross(t, cross, 4.0) && rng.Chance(0.18))
           street_trees.push_back(RandomTree(t * ax + (pos + side * (half_street + 1.0)) * n,
-                                            o.ground_z, 2.0, 4.5, rng));
+                                            scene.ground, 2.0, 4.5, rng));
     }
     // A few cars driving.
     for (double t = -lim; t < lim; t += 10.0)
       if (!near_cross(t, cross, 6.0) && rng.Chance(0.03))
         AddCar(street_props, t * ax + (pos + (rng.Chance(0.5) ? 1.7 : -1.7)) * n,
-               rng.Chance(0.5) ? V2(ax) : V2(-ax), o.ground_z, rng);
+               rng.Chance(0.5) ? V2(ax) : V2(-ax), scene.ground, rng);
   };
   for (double y : ys) markings(true, y, xs);
   for (double x : xs) markings(false, x, ys);
@@ -1035,6 +1060,8 @@ Scene GenerateScene(const SceneOptions& o, uint64_t seed) {
 }
 Scene SceneFromCityModel(const CityModel& city, const SceneOptions& o, uint64_t seed) {
   if (city.buildings.empty()) throw Error("simulate: the city model has no buildings");
+  if (!o.ground_slope.isZero())
+    throw Error("simulate: a ground slope needs a generated town, not a city model");
   Scene scene;
   AddBaseMaterials(scene, seed);
   scene.city = city;
@@ -1073,6 +1100,18 @@ SceneTruth TruthOf(const Scene& scene) {
   SceneTruth t;
   t.city = scene.city;
   t.edges = ExtractBuildingEdges(scene.city);
+  if (!scene.ground.slope.isZero()) {
+    // What the images show of a wall's foot is where it enters the terrain,
+    // above the building's base everywhere but at its lowest corner. The
+    // terrain is a plane, so the cut of a straight edge is straight.
+    for (TrueEdge& e : t.edges) {
+      if (e.kind != EdgeKind::kFootprint && e.kind != EdgeKind::kWallCorner) continue;
+      for (V3* p : {&e.a, &e.b}) {
+        const double g = scene.ground.HeightAt(p->head<2>());
+        if (e.kind == EdgeKind::kFootprint || p->z() < g) p->z() = g;
+      }
+    }
+  }
   t.roof_planes = ExtractRoofPlanes(scene.city);
   // Ground markings: region borders where the material really changes,
   // found by walking each border in 5 cm steps and comparing both sides.
@@ -1094,8 +1133,8 @@ SceneTruth TruthOf(const Scene& scene) {
         if (s1 - s0 < 0.1) return;
         const V2 p0 = a + s0 * d, p1 = a + s1 * d;
         TrueEdge e;
-        e.a = V3(p0.x(), p0.y(), scene.ground.z);
-        e.b = V3(p1.x(), p1.y(), scene.ground.z);
+        e.a = V3(p0.x(), p0.y(), scene.ground.HeightAt(p0));
+        e.b = V3(p1.x(), p1.y(), scene.ground.HeightAt(p1));
         e.kind = EdgeKind::kGroundMarking;
         t.edges.push_back(e);
       };

@@ -37,10 +37,15 @@ struct GroundRegion {
   }
 };
 
-// Flat terrain at height z with a base material and regions on top (a later
-// region wins where they overlap).
+// Terrain: a plane through height z at the origin rising by `slope` (dz/dx,
+// dz/dy; zero: flat), with a base material and regions on top (a later
+// region wins where they overlap). A plane keeps the renderer's terrain hit
+// exact and ground markings straight in 3D, and still gives every point its
+// own ground height, which a block on a hillside needs tested.
 struct GroundLayout {
   double z = 0;
+  Eigen::Vector2d slope = Eigen::Vector2d::Zero();
+  double HeightAt(const Eigen::Vector2d& p) const { return z + slope.dot(p); }
   int base_material = -1;
   std::vector<GroundRegion> regions;
   int MaterialAt(const Eigen::Vector2d& p) const;  // linear scan; renderer indexes it
@@ -110,6 +115,10 @@ struct SceneOptions {
   // (low contrast scenes).
   double roof_contrast = 1.0;
   double ground_z = 0;
+  // Rise of the terrain per metre east and north (0: flat). Each building
+  // stands on the lowest ground under its footprint, so its walls reach the
+  // terrain all round; cars, hedges and trees stand on the ground under them.
+  Eigen::Vector2d ground_slope = Eigen::Vector2d::Zero();
   // Cars, hedges, garden beds, paths, drains (clutter on the ground).
   bool clutter = true;
   // Chimneys, solar panels, roof windows, roof-top boxes (not roof planes).
@@ -131,7 +140,8 @@ Scene GenerateScene(const SceneOptions& options, uint64_t seed);
 
 // A scene around given buildings (e.g. a real CityGML LoD2 model read by
 // io): materials by surface type, flat ground at the lowest ground surface,
-// trees kept off the footprints. Street layout is not inferred.
+// trees kept off the footprints. Street layout is not inferred; a ground
+// slope is refused (the model's own ground heights would not follow it).
 Scene SceneFromCityModel(const CityModel& city, const SceneOptions& options, uint64_t seed);
 
 // Buildings, their classified edges, roof planes and the ground markings

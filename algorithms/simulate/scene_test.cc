@@ -8,6 +8,7 @@
 
 #include "algorithms/simulate/presets.h"
 #include "algorithms/simulate/renderer.h"
+#include "algorithms/simulate/scene_truth.h"
 
 namespace roofsweep {
 namespace sim {
@@ -157,6 +158,64 @@ TEST(Scene, CarsStayOffBuildings) {
     }
   }
   EXPECT_GT(cars, 20);
+}
+
+// On a slope every building stands on the lowest ground under it (its walls
+// reach the terrain all round), cars and hedges touch the ground without
+// floating, trees stand on it, and the truth's wall feet and ground markings
+// lie on it. The slope only lifts things: the town in plan is the flat one.
+TEST(Scene, OnASlopeEverythingStandsOnTheGround) {
+  SceneOptions o;
+  o.extent_x = o.extent_y = 140;
+  o.building_count = 40;
+  const Scene flat = GenerateScene(o, 6);
+  o.ground_slope = Eigen::Vector2d(0.07, -0.04);
+  const Scene s = GenerateScene(o, 6);
+  const GroundLayout& g = s.ground;
+  ASSERT_EQ(s.city.buildings.size(), flat.city.buildings.size());
+  ASSERT_GT(s.city.buildings.size(), 20u);
+  for (size_t i = 0; i < s.city.buildings.size(); ++i) {
+    const Building& b = s.city.buildings[i];
+    double low = 1e300, base = 1e300;
+    for (const Surface& sf : b.surfaces) {
+      if (sf.type != SurfaceType::kGround) continue;
+      for (const Polygon3& poly : sf.polygons)
+        for (const Eigen::Vector3d& q : poly.exterior) {
+          low = std::min(low, g.HeightAt(q.head<2>()));
+          base = std::min(base, q.z());
+          EXPECT_LE(q.z(), g.HeightAt(q.head<2>()) + 1e-9) << b.id;
+        }
+    }
+    EXPECT_NEAR(base, low, 1e-9) << b.id;
+    const Eigen::Vector3d& a = b.surfaces[0].polygons[0].exterior[0];
+    const Eigen::Vector3d& f = flat.city.buildings[i].surfaces[0].polygons[0].exterior[0];
+    EXPECT_NEAR((a - f).head<2>().norm(), 0, 1e-9) << b.id;
+  }
+  int boxes = 0;
+  for (const Prop& p : s.props) {
+    if (p.kind != PropKind::kCar && p.kind != PropKind::kHedge) continue;
+    const double bottom = p.center.z() - p.half.z();
+    double low = 1e300;
+    for (int sx : {-1, 1})
+      for (int sy : {-1, 1})
+        low = std::min(low, g.HeightAt((p.center + sx * p.half.x() * p.axes.col(0) +
+                                        sy * p.half.y() * p.axes.col(1))
+                                           .head<2>()));
+    // A car's body stands 0.2 m up on its wheels and its cabin higher.
+    EXPECT_GE(bottom, low - 1e-9);
+    EXPECT_LE(bottom, low + 1.0);
+    ++boxes;
+  }
+  EXPECT_GT(boxes, 20);
+  for (const Tree& t : s.trees) EXPECT_NEAR(t.base.z(), g.HeightAt(t.base.head<2>()), 1e-9);
+  int on_ground = 0;
+  for (const TrueEdge& e : TruthOf(s).edges) {
+    if (e.kind != EdgeKind::kFootprint && e.kind != EdgeKind::kGroundMarking) continue;
+    EXPECT_NEAR(e.a.z(), g.HeightAt(e.a.head<2>()), 1e-9);
+    EXPECT_NEAR(e.b.z(), g.HeightAt(e.b.head<2>()), 1e-9);
+    ++on_ground;
+  }
+  EXPECT_GT(on_ground, 100);
 }
 
 }  // namespace

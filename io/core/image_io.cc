@@ -2,6 +2,7 @@
 
 #include <cpl_conv.h>
 #include <gdal_priv.h>
+#include <ogr_spatialref.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -289,6 +290,50 @@ void WriteImage(const std::string& path, const cv::Mat& rgb8, int jpeg_quality) 
   if (ec) {
     RemoveQuietly(tmp);
     throw Error(path + ": cannot rename the written image into place (" + ec.message() + ")");
+  }
+}
+
+void WriteHeightRaster(const std::string& path, const cv::Mat& heights,
+                       const std::array<double, 6>& geotransform, const std::string& crs) {
+  gdal::EnsureRegistered();
+  if (heights.empty() || heights.type() != CV_32FC1)
+    throw Error(path + ": a height raster must be one band of 32-bit floats");
+  gdal::ErrorCapture errors;
+  std::string wkt;
+  if (!crs.empty()) {
+    OGRSpatialReference srs;
+    char* text = nullptr;
+    if (srs.SetFromUserInput(crs.c_str()) != OGRERR_NONE || srs.exportToWkt(&text) != OGRERR_NONE) {
+      CPLFree(text);
+      throw Error(path + ": unknown CRS '" + crs + "'");
+    }
+    wkt = text;
+    CPLFree(text);
+  }
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+  if (!driver) throw Error(path + ": GDAL driver GTiff missing");
+  const char* options[] = {"COMPRESS=DEFLATE", "PREDICTOR=3", nullptr};
+  const std::string tmp = TemporaryName(path);
+  DatasetPtr out(driver->Create(tmp.c_str(), heights.cols, heights.rows, 1, GDT_Float32,
+                                const_cast<char**>(options)));
+  bool ok = out != nullptr;
+  if (ok) {
+    double gt[6];
+    std::copy(geotransform.begin(), geotransform.end(), gt);
+    const cv::Mat src = heights.isContinuous() ? heights : heights.clone();
+    ok = out->SetGeoTransform(gt) == CE_None &&
+         (wkt.empty() || out->SetProjection(wkt.c_str()) == CE_None) &&
+         out->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, src.cols, src.rows,
+                                         const_cast<uchar*>(src.data), src.cols, src.rows,
+                                         GDT_Float32, 0, 0, nullptr) == CE_None;
+    GDALClose(GDALDataset::ToHandle(out.release()));
+  }
+  std::error_code ec;
+  if (ok && !errors.HasFailure()) fs::rename(tmp, path, ec);
+  if (!ok || errors.HasFailure() || ec) {
+    RemoveQuietly(tmp);
+    throw Error(path + ": cannot write the height raster (" +
+                (ec ? ec.message() : errors.Message("GDAL failed")) + ")");
   }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
 #include <string>
 
@@ -41,5 +42,12 @@ cv::Mat ReadImage(const std::string& path, const cv::Rect& window);
 // the format follows the extension (.tif GeoTIFF tiled/deflate, .jpg JPEG
 // quality `jpeg_quality`, .png PNG). Atomic: temporary name + rename.
 void WriteImage(const std::string& path, const cv::Mat& rgb8, int jpeg_quality = 90);
+
+// Writes a height raster (CV_32FC1, rows north to south) as a GeoTIFF in
+// `crs` (any PROJ definition; empty: none) with the GDAL geotransform
+// `geotransform` (x0, dx, 0, y0, 0, -dy): a DTM the block manifest can name.
+// Atomic like WriteImage.
+void WriteHeightRaster(const std::string& path, const cv::Mat& heights,
+                       const std::array<double, 6>& geotransform, const std::string& crs);
 
 }  // namespace roofsweep

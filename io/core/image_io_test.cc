@@ -127,6 +127,39 @@ TEST(ImageIo, TiledDeflateTiffRoundTripLeavesNothingElse) {
   EXPECT_EQ(Listing(dir), std::vector<std::string>{"card.tif"});
 }
 
+// A DTM as the simulator writes it: georeferenced, in its CRS, heights kept
+// to float precision, nothing else left in the folder.
+TEST(ImageIo, HeightRasterIsAGeoreferencedDtm) {
+  const std::string dir = testing::TempDir();
+  const std::string path = dir + "/dtm.tif";
+  cv::Mat z(2, 3, CV_32FC1);
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 3; ++c) z.at<float>(r, c) = 500.25f + 10 * r + c;
+  WriteHeightRaster(path, z, {691000, 2, 0, 5335004, 0, -2}, "EPSG:25832");
+  EXPECT_EQ(Listing(dir), std::vector<std::string>{"dtm.tif"});
+  GDALAllRegister();
+  GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER);
+  ASSERT_NE(ds, nullptr);
+  double gt[6];
+  ASSERT_EQ(ds->GetGeoTransform(gt), CE_None);
+  EXPECT_EQ(gt[0], 691000);
+  EXPECT_EQ(gt[3], 5335004);
+  EXPECT_EQ(gt[5], -2);
+  ASSERT_NE(ds->GetSpatialRef(), nullptr);
+  EXPECT_STREQ(ds->GetSpatialRef()->GetAuthorityCode(nullptr), "25832");
+  EXPECT_EQ(ds->GetRasterBand(1)->GetRasterDataType(), GDT_Float32);
+  float back[6];
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, 3, 2, back, 3, 2, GDT_Float32, 0, 0),
+            CE_None);
+  GDALClose(ds);
+  // Second row (south), third column.
+  EXPECT_EQ(back[5], 512.25f);
+  EXPECT_THROW(WriteHeightRaster(dir + "/bad.tif", cv::Mat(2, 2, CV_8UC1), {0, 1, 0, 0, 0, -1}, ""),
+               Error);
+  EXPECT_THROW(WriteHeightRaster(dir + "/bad.tif", z, {0, 1, 0, 0, 0, -1}, "EPSG:999999"), Error);
+  EXPECT_EQ(Listing(dir), std::vector<std::string>{"dtm.tif"});
+}
+
 TEST(ImageIo, AWindowIsThatPartOfTheImage) {
   const std::string dir = testing::TempDir();
   const std::string path = dir + "/window.tif";

@@ -43,8 +43,16 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
               "focal length in pixels)")
       .Option("-buildings", &r.buildings, "N", "number of generated buildings (preset)")
       .Flag("-obliques", &r.obliques, "add oblique views (forward, backward, left, right)")
+      .Option("-terrain_slope", &r.terrain_slope_percent, "PERCENT",
+              "the ground falls by this much per 100 m (0: flat); each building stands on the "
+              "lowest ground under it, and the block gets a DTM (dtm.tif) instead of one ground "
+              "height")
+      .Option("-terrain_aspect", &r.terrain_aspect_deg, "DEG",
+              "direction the ground falls towards, clockwise from north (0)")
       .Flag("-overwrite", &r.overwrite, "replace an existing output folder")
       .Example("roofsweep simulate -preset realistic -seed 7 -o out/block")
+      .Example(
+          "roofsweep simulate -preset realistic -terrain_slope 8 -terrain_aspect 120 -o out/hill")
       .Example("roofsweep simulate -citygml 3910_5819.gml -o out/berlin");
   if (!p.Parse(args)) return 0;
   if (r.output_dir.empty()) throw UsageError("Missing option -o DIR", p.Synopsis());

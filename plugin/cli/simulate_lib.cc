@@ -3,9 +3,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "algorithms/core/error.h"
@@ -91,6 +93,50 @@ std::string CameraYaml(const Camera& c) {
   return out;
 }
 
+// The simulated terrain as a DTM in the block's CRS: 1 m cells over the
+// ground every view sees, nadir or oblique, with a margin.
+void WriteTerrainDtm(const sim::SimulationResult& sim, const LocalFrame& frame,
+                     const std::string& crs, const std::string& path) {
+  const sim::GroundLayout& g = sim.scene.ground;
+  Eigen::Vector4d box = sim.scene.area;
+  for (const sim::SimulatedView& v : sim.views) {
+    const Eigen::Vector3d& C = v.pose.C;
+    // Oblique views look up to about their height away from below them.
+    const double reach = 1.2 * std::max(0.0, C.z() - g.HeightAt(C.head<2>()));
+    const Eigen::Vector2d r = Eigen::Vector2d::Constant(reach);
+    box.head<2>() = box.head<2>().cwiseMin(C.head<2>() - r).eval();
+    box.tail<2>() = box.tail<2>().cwiseMax(C.head<2>() + r).eval();
+  }
+  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for (double x : {box(0), box(2)})
+    for (double y : {box(1), box(3)}) {
+      const Eigen::Vector2d p = frame.ToCrs(Eigen::Vector3d(x, y, g.HeightAt({x, y}))).head<2>();
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  const double cell = 1.0;
+  lo = (lo.array() / cell).floor().matrix() * cell;
+  hi = (hi.array() / cell).ceil().matrix() * cell;
+  const int cols = static_cast<int>(std::lround((hi.x() - lo.x()) / cell));
+  const int rows = static_cast<int>(std::lround((hi.y() - lo.y()) / cell));
+  cv::Mat z(rows, cols, CV_32FC1);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const Eigen::Vector2d e(lo.x() + (c + 0.5) * cell, hi.y() - (r + 0.5) * cell);
+      // The terrain point under this cell centre: the local frame's vertical
+      // leans against the CRS's by a few millidegrees, so one correction of
+      // the plan position brings it within a millimetre.
+      Eigen::Vector3d l = frame.ToLocal(Eigen::Vector3d(e.x(), e.y(), frame.OriginCrs().z()));
+      Eigen::Vector3d q = frame.ToCrs(Eigen::Vector3d(l.x(), l.y(), g.HeightAt(l.head<2>())));
+      l = frame.ToLocal(Eigen::Vector3d(e.x(), e.y(), q.z()));
+      q = frame.ToCrs(Eigen::Vector3d(l.x(), l.y(), g.HeightAt(l.head<2>())));
+      z.at<float>(r, c) = static_cast<float>(q.z());
+    }
+  WriteHeightRaster(path, z, {lo.x(), cell, 0, hi.y(), 0, -cell}, crs);
+}
+
 }  // namespace
 
 SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
@@ -103,6 +149,16 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   if (r.gsd > 0) o.cameras.gsd = r.gsd;
   if (r.buildings >= 0) o.scene.building_count = r.buildings;
   if (r.obliques) o.cameras.obliques = true;
+  if (!std::isfinite(r.terrain_slope_percent) || !std::isfinite(r.terrain_aspect_deg) ||
+      r.terrain_slope_percent < 0 || r.terrain_slope_percent > 50)
+    throw Error("simulate: the terrain slope must be 0..50 %");
+  if (r.terrain_slope_percent > 0) {
+    if (!r.citygml.empty())
+      throw Error("simulate: a terrain slope needs a generated town, not -citygml");
+    const double a = r.terrain_aspect_deg * M_PI / 180, s = r.terrain_slope_percent / 100;
+    // The ground falls towards the aspect, so it rises the other way.
+    o.scene.ground_slope = -s * Eigen::Vector2d(std::sin(a), std::cos(a));
+  }
   std::string ext = r.image_format.empty() ? (r.preset == "easy" ? "png" : "jpg") : r.image_format;
   if (ext == "jpeg") ext = "jpg";
   if (ext != "jpg" && ext != "tif" && ext != "png") {
@@ -189,7 +245,12 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   io.crs = crs;
   io.camera_file = dir + "/orientation/camera.yaml";
   io.image_dir = dir + "/images";
-  io.ground_height = frame.ToCrs(Eigen::Vector3d(0, 0, sim.scene.ground.z)).z();
+  if (sim.scene.ground.slope.isZero()) {
+    io.ground_height = frame.ToCrs(Eigen::Vector3d(0, 0, sim.scene.ground.z)).z();
+  } else {
+    WriteTerrainDtm(sim, frame, crs, dir + "/dtm.tif");
+    io.dtm = dir + "/dtm.tif";
+  }
   BlockManifest manifest = ImportBlock("opk", {dir + "/orientation/opk.txt"}, io);
   WriteManifest(manifest, dir + "/block.json", false);
 
@@ -246,7 +307,9 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
       {"roof_planes", s.roof_planes},
       {"edges", s.edges},
       {"image_format", ext},
-      {"jpeg_quality", ext == "jpg" ? r.jpeg_quality : 0}};
+      {"jpeg_quality", ext == "jpg" ? r.jpeg_quality : 0},
+      {"terrain_slope_percent", r.terrain_slope_percent},
+      {"terrain_aspect_deg", r.terrain_aspect_deg}};
   WriteText(dir + "/simulation.json", meta.dump(2) + "\n");
   tmp.CommitTo(r.output_dir);
   ReportOrCancel(progress, 1.0);

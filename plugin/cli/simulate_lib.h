@@ -33,6 +33,11 @@ struct SimulateRequest {
   double gsd = 0;
   int buildings = -1;
   bool obliques = false;
+  // Terrain: a plane falling by terrain_slope_percent towards the azimuth
+  // terrain_aspect_deg (clockwise from the local north, as a GIS aspect).
+  // Not 0: the block gets a DTM (dtm.tif) instead of one ground height.
+  double terrain_slope_percent = 0;
+  double terrain_aspect_deg = 0;
 };
 
 struct SimulateSummary {
@@ -50,6 +55,8 @@ struct SimulateSummary {
 //   orientation/camera.yaml        orthority-style interior orientation
 //   block.json                     the manifest, made by importing the two
 //                                  files above (so the readers are exercised)
+//   dtm.tif                        with a terrain slope: the terrain heights
+//                                  (1 m cells, block CRS), named by block.json
 //   groundtruth.gml                LoD2 ground truth, CityGML 2.0, block CRS
 //   groundtruth_edges.json         3D roof edges and ground markings with kinds
 //   footprints.gpkg                the true building footprints (ground

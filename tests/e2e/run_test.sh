@@ -155,6 +155,52 @@ assert cand >= acc and unset == 0, (cand, acc, unset)
 PY
 }
 
+# A block on a 10 % slope: the simulator writes a DTM and names it in the
+# manifest, the truth's wall feet lie on it, and every building run builds
+# stands on the lowest DTM height under its ground surface.
+test_run_on_a_slope() {
+  local b="$WORK/slope"
+  expect_ok simulate_slope simulate -preset easy -seed 3 -size 512 -gsd 0.15 -strips 1 -views 4 \
+    -buildings 3 -terrain_slope 10 -terrain_aspect 60 -o "$b" -q || return
+  python3 -c "
+import json,sys; m=json.load(open(sys.argv[1]))
+assert m['ground']=={'dtm': 'dtm.tif'}, m['ground']" "$b/block.json" 2>"$WORK/py.txt" \
+    && pass slope_manifest_names_dtm || fail slope_manifest_names_dtm "$(tail -1 "$WORK/py.txt")"
+  # gdallocationinfo takes the nearest 1 m cell: within 5 cm on this slope.
+  python3 - "$b" <<'PY' 2>"$WORK/py.txt" && pass slope_truth_on_dtm || fail slope_truth_on_dtm "$(tail -1 "$WORK/py.txt")"
+import json, subprocess, sys
+segs = [s for s in json.load(open(sys.argv[1] + "/groundtruth_edges.json"))["segments"]
+        if s["kind"] == "footprint"]
+pts = [p for s in segs for p in (s["a"], s["b"])]
+out = subprocess.run(["gdallocationinfo", "-valonly", "-geoloc", sys.argv[1] + "/dtm.tif"],
+                     input="".join("%f %f\n" % (p[0], p[1]) for p in pts),
+                     capture_output=True, text=True, check=True).stdout.split()
+assert len(pts) > 8 and len(out) == len(pts), (len(pts), len(out))
+worst = max(abs(float(h) - p[2]) for h, p in zip(out, pts))
+assert worst < 0.06, worst
+PY
+  expect_ok run_slope run "$b" -footprints "$b/footprints.gpkg" -o "$WORK/slope.gpkg" || return
+  ogrinfo -ro -al -q "$WORK/slope.gpkg" ground_surfaces >"$WORK/ground.txt" 2>&1
+  python3 - "$b/dtm.tif" "$WORK/ground.txt" <<'PY' 2>"$WORK/py.txt" && pass slope_buildings_on_dtm \
+    || fail slope_buildings_on_dtm "$(tail -1 "$WORK/py.txt")"
+import re, subprocess, sys
+n = 0
+for line in open(sys.argv[2]):
+    if "POLYGON" not in line:
+        continue
+    pts = [tuple(map(float, p.split())) for p in re.findall(r"(-?[\d.]+ -?[\d.]+ -?[\d.]+)", line)]
+    out = subprocess.run(["gdallocationinfo", "-valonly", "-geoloc", sys.argv[1]],
+                         input="".join("%f %f\n" % (x, y) for x, y, _ in pts),
+                         capture_output=True, text=True, check=True).stdout.split()
+    dtm = [float(v) for v in out]
+    base = min(z for _, _, z in pts)
+    assert max(z for _, _, z in pts) - base < 1e-3, "ground surface not level"
+    assert abs(base - min(dtm)) < 0.08, (base, min(dtm))
+    n += 1
+assert n > 0, "no ground surface"
+PY
+}
+
 test_run_with_footprints() {
   small_block || return
   # The simulator's footprints, in another CRS than the block: read through

@@ -131,6 +131,8 @@ test_bad_input() {
   expect_fail no_building_fits "$WORK/tiny" "no building fits" -- simulate -preset easy -size 256 -gsd 0.05 -strips 1 -views 2 -o "$WORK/tiny"
   expect_fail unknown_preset "$WORK/x" "preset" -- simulate -preset nonsense -o "$WORK/x"
   expect_fail missing_citygml "$WORK/y" "nope.gml" -- simulate -citygml "$WORK/nope.gml" -o "$WORK/y"
+  expect_fail steep_slope "$WORK/s" "terrain slope must be 0..50 %" -- simulate -preset easy -terrain_slope 80 -o "$WORK/s"
+  expect_fail slope_on_citygml "$WORK/c" "needs a generated town" -- simulate -citygml "$WORK/nope.gml" -terrain_slope 5 -o "$WORK/c"
   small_block || return
   expect_fail existing_folder "" "exists" -- simulate -preset easy -o "$SIM"
   expect_fail eval_missing_truth "" "nothere" -- eval "$SIM/groundtruth.gml" "$WORK/nothere.gml"
