@@ -30,6 +30,21 @@ double GroundModel::HeightAt(double x, double y) const {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+Eigen::Vector4d GroundModel::PlaneAt(double x, double y, double radius) const {
+  const double z = HeightAt(x, y);
+  if (!std::isfinite(z)) return Eigen::Vector4d::Constant(std::numeric_limits<double>::quiet_NaN());
+  auto slope = [&](double ax, double ay) {
+    const double s =
+        (HeightAt(x + ax * radius, y + ay * radius) - HeightAt(x - ax * radius, y - ay * radius)) /
+        (2 * radius);
+    return std::isfinite(s) ? s : 0.0;
+  };
+  const double gx = radius > 0 ? slope(1, 0) : 0.0, gy = radius > 0 ? slope(0, 1) : 0.0;
+  if (gx == 0 && gy == 0) return Eigen::Vector4d(0, 0, 1, -z);
+  const Eigen::Vector3d n = Eigen::Vector3d(-gx, -gy, 1).normalized();
+  return Eigen::Vector4d(n.x(), n.y(), n.z(), -n.dot(Eigen::Vector3d(x, y, z)));
+}
+
 int Block::FindView(const std::string& name) const {
   for (size_t i = 0; i < views.size(); ++i)
     if (views[i].name == name) return static_cast<int>(i);

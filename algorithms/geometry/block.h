@@ -27,6 +27,12 @@ struct GroundModel {
   bool Known() const { return height.has_value() || grid.has_value(); }
   // Height at (x, y), bilinear on the grid; falls back to `height`, then NaN.
   double HeightAt(double x, double y) const;
+  // The ground near (x, y) as a plane (n, d), n . X + d = 0, unit n with
+  // n.z > 0: through HeightAt(x, y), tilted by the DTM's slope between
+  // (x, y) -+ `radius` along x and along y (level where that is unknown).
+  // NaN where the height is. On a hillside a level plane at the height
+  // under a roof's centre misses the terrain at its edges by slope x radius.
+  Eigen::Vector4d PlaneAt(double x, double y, double radius) const;
 };
 
 // How the local frame relates to the block's CRS. Pure description: the

@@ -96,5 +96,34 @@ TEST(GroundModel, GridBilinearAndFallback) {
   EXPECT_DOUBLE_EQ(g.HeightAt(1.0, 1.0), 25);
 }
 
+// The ground as a plane: the DTM's own plane on a hillside (a level plane
+// at the centre's height would be 0.6 m off at 6 m), level and exactly
+// (0, 0, 1, -h) on a constant height, NaN where nothing is known.
+TEST(GroundModel, PlaneAtFollowsTheSlope) {
+  GroundModel g;
+  EXPECT_TRUE(std::isnan(g.PlaneAt(0, 0, 5)[3]));
+  g.height = 7;
+  EXPECT_EQ(g.PlaneAt(3, 4, 5), Eigen::Vector4d(0, 0, 1, -7));
+  GroundModel::Grid grid;
+  grid.x0 = -20;
+  grid.y0 = 20;
+  grid.dx = grid.dy = 1;
+  grid.rows = grid.cols = 40;
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) {
+      const double x = grid.x0 + c + 0.5, y = grid.y0 - r - 0.5;
+      grid.z.push_back(static_cast<float>(100 + 0.1 * x - 0.05 * y));
+    }
+  g.grid = grid;
+  const Eigen::Vector4d p = g.PlaneAt(2, -3, 6);
+  EXPECT_GT(p[2], 0);
+  EXPECT_NEAR(p.head<3>().norm(), 1, 1e-12);
+  for (const Eigen::Vector2d q : {Eigen::Vector2d(2, -3), Eigen::Vector2d(8, -3),
+                                  Eigen::Vector2d(-4, 3), Eigen::Vector2d(10, -9)}) {
+    const double z = -(p[0] * q.x() + p[1] * q.y() + p[3]) / p[2];
+    EXPECT_NEAR(z, g.HeightAt(q.x(), q.y()), 1e-4) << q.transpose();
+  }
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -325,13 +325,14 @@ SampleGrid PatchSamples(const Ring2& patch, const VerifyOptions& o) {
 
 // The samples marked `inside`, lifted onto `plane` and carried along the
 // ray of the view whose centre is nearest in plan (ScorePlane's reference
-// rule, without its visibility test) down to the height zg: the same
+// rule, without its visibility test) down to the plane `ground`: the same
 // reference windows on the ground, not the ground below the plane, which
 // other views see beside a roof.
 std::vector<Eigen::Vector3d> SamplesOnTheGround(const Block& block,
                                                 const std::vector<Eigen::Vector3d>& samples,
                                                 const std::vector<char>& inside,
-                                                const Eigen::Vector4d& plane, double zg) {
+                                                const Eigen::Vector4d& plane,
+                                                const Eigen::Vector4d& ground) {
   std::vector<Eigen::Vector3d> down;
   for (size_t k = 0; k < samples.size(); ++k) {
     if (!inside[k]) continue;
@@ -343,9 +344,11 @@ std::vector<Eigen::Vector3d> SamplesOnTheGround(const Block& block,
       const double d = (view.pose.C - X).head<2>().norm();
       if (d < best) best = d, ref = &view;
     }
-    if (!ref || !(std::abs(X.z() - ref->pose.C.z()) > 1e-6)) continue;
+    if (!ref) continue;
     const Eigen::Vector3d C = ref->pose.C;
-    down.push_back(C + (zg - C.z()) / (X.z() - C.z()) * (X - C));
+    const double along = ground.head<3>().dot(X - C);
+    if (!(std::abs(along) > 1e-6)) continue;
+    down.push_back(C - (ground.head<3>().dot(C) + ground[3]) / along * (X - C));
   }
   return down;
 }
@@ -649,6 +652,11 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     if (v.reason.empty() && o.trim_patch) trimmed = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
     if (v.reason.empty() && !height_fails && o.ground_alternative && block.ground.Known()) {
       const double zg = block.ground.HeightAt(c.x(), c.y());
+      // The ground under the patch, sloping as the DTM does across it.
+      const Ring2& seen = trimmed.size() >= 3 ? trimmed : p.patch;
+      double radius = 0;
+      for (const Eigen::Vector2d& q : seen) radius = std::max(radius, (q - c).norm());
+      const Eigen::Vector4d ground = block.ground.PlaneAt(c.x(), c.y(), radius);
       if (std::isfinite(zg) && zc - zg > 2 * v.offset_m) {
         // The same image evidence on the ground: the samples inside the
         // trimmed patch (SamplesOnTheGround).
@@ -661,8 +669,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
         for (const auto& [k, value] : at.values)
           if (inside[k]) plane_sum += value, ++plane_n;
         const std::vector<Eigen::Vector3d> down =
-            SamplesOnTheGround(block, samples, inside, p.plane, zg);
-        const Scores g = ScorePlane(block, grey, down, Eigen::Vector4d(0, 0, 1, -zg), o);
+            SamplesOnTheGround(block, samples, inside, p.plane, ground);
+        const Scores g = ScorePlane(block, grey, down, ground, o);
         if (plane_n > 0 && g.n > 0) {
           const double plane_score = plane_sum / plane_n;
           v.score_ground = g.sum / g.n;
