@@ -110,8 +110,8 @@ std::string FormatTable(const EvalResult& r) {
           Fmt(l.raw.result_on_reference_m, "%.1f") + " of " + Fmt(l.raw.result_length_m, "%.1f m") +
               ", " + std::to_string(l.raw.segments) + " segments");
     t.Row("on a surface, no edge", Pct(l.on_surface),
-          std::isfinite(r.options.lines.ground_height) ? "texture, shadows (roofs, walls, terrain)"
-                                                       : "texture, shadows (roofs, walls)");
+          r.options.lines.ground.Known() ? "texture, shadows (roofs, walls, terrain)"
+                                         : "texture, shadows (roofs, walls)");
     t.Row("off every surface", Pct(l.off_surface), "mismatches, trees");
     t.Row(
         "completeness", Pct(l.completeness),

@@ -226,7 +226,7 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
   for (const auto& l : extra_reference) ref.push_back(&l);
   const SegmentGrid res_grid(res, options.distance_m, cell);
   const SegmentGrid ref_grid(ref, options.distance_m, cell);
-  const bool with_surfaces = surfaces != nullptr || std::isfinite(options.ground_height);
+  const bool with_surfaces = surfaces != nullptr || options.ground.Known();
   static const std::vector<Polygon3> kNone;
   const PolygonGrid surface_grid(surfaces ? *surfaces : kNone, options.distance_m, cell);
   for (const auto& l : result) {
@@ -237,9 +237,9 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
         l, options.sample_step_m, [&](const Eigen::Vector3d& p, const Eigen::Vector3d& dir) {
           if (ref_grid.Near(p, dir, options.distance_m, cos_angle)) {
             ++on_edge;
-          } else if (with_surfaces &&
-                     (std::abs(p.z() - options.ground_height) <= options.distance_m ||
-                      surface_grid.Near(p, options.distance_m))) {
+          } else if (with_surfaces && (std::abs(p.z() - options.ground.HeightAt(p.x(), p.y())) <=
+                                           options.distance_m ||
+                                       surface_grid.Near(p, options.distance_m))) {
             ++on_surface;
           }
         });

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
+#include "algorithms/geometry/block.h"
 #include "algorithms/geometry/segment3.h"
 
 namespace roofsweep::eval {
@@ -23,9 +24,10 @@ struct LineEvalOptions {
   // Edges between two polygons this close to coplanar are not roof edges
   // (triangulated roof faces in real LoD2 data).
   double coplanar_angle_deg = 2.0;
-  // Height of flat terrain (NaN: unknown). Result lines within distance_m
-  // of it, or of a reference surface polygon, count as on a true surface.
-  double ground_height = std::numeric_limits<double>::quiet_NaN();
+  // The terrain in the models' coordinates: a constant height or a DTM
+  // grid (unknown: none). Result lines within distance_m of it, or of a
+  // reference surface polygon, count as on a true surface.
+  GroundModel ground;
 };
 
 // The distinct edges of the roof polygons (exterior rings and holes) of all

@@ -108,7 +108,7 @@ TEST(EvaluateLines, LinesOnASurfaceButNoEdgeAreCountedApart) {
   const Polygon3 roof{{V(0, 0, 5), V(10, 0, 5), V(10, 8, 9), V(0, 8, 9)}, {}};
   const std::vector<Polygon3> surfaces = {roof};
   LineEvalOptions o;
-  o.ground_height = 0;
+  o.ground.height = 0;
   const Segment3 course{V(2, 4, 7), V(8, 4, 7)};          // inside the face, 6 m
   const Segment3 shadow{V(20, 0, 0.02), V(20, 4, 0.02)};  // on the terrain, 4 m
   const Segment3 above{V(2, 4, 8), V(8, 4, 8)};           // 1 m over the face, 6 m

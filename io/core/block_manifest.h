@@ -71,6 +71,13 @@ void ValidateManifest(const BlockManifest& manifest, bool check_images);
 // ground height or DTM resampled into the local frame.
 Block ManifestToBlock(const BlockManifest& manifest);
 
+// The manifest's ground in its CRS's own coordinates over `bbox` (min x,
+// min y, max x, max y): the constant height, or the DTM (the terrain
+// derived from the DSM) on a north-up grid at its cell size; unknown when the
+// manifest has neither. For comparing results with a reference model in the
+// CRS (eval), which never goes through the local frame.
+GroundModel ManifestGroundInCrs(const BlockManifest& manifest, const Eigen::Vector4d& bbox);
+
 // The local frame ManifestToBlock uses for this manifest (same CRS, origin
 // and undulation), to take results back to CRS coordinates.
 LocalFrame ManifestLocalFrame(const BlockManifest& manifest);

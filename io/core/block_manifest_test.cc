@@ -449,6 +449,34 @@ TEST(BlockManifest, DtmInAnotherCrsIsResampledIntoTheLocalFrame) {
   EXPECT_NEAR(block.ground.HeightAt(0, 0), 0.0, 0.01);
 }
 
+// The ground in the block CRS itself (for eval): the geographic DTM's
+// heights at UTM positions, the constant height, or nothing.
+TEST(BlockManifest, GroundInTheCrsFollowsTheDtm) {
+  const std::string dir = testing::TempDir();
+  BlockManifest m = SyntheticBlock(dir);
+  const Eigen::Vector4d box(400400, 5800200, 400800, 5800500);
+  ASSERT_TRUE(m.ground_height.has_value());
+  const GroundModel constant = ManifestGroundInCrs(m, box);
+  EXPECT_FALSE(constant.grid.has_value());
+  EXPECT_EQ(constant.HeightAt(400600, 5800350), *m.ground_height);
+  m.ground_height.reset();
+  EXPECT_FALSE(ManifestGroundInCrs(m, box).Known());
+  const LinearDtm dtm = LinearDtmUnderSyntheticBlock(dir + "/dtm.tif");
+  m.dtm = dtm.path;
+  const GroundModel g = ManifestGroundInCrs(m, box);
+  ASSERT_TRUE(g.grid.has_value());
+  const GeographicLib::TransverseMercator tm(kGrs80A, kGrs80F, GeographicLib::Constants::UTM_k0());
+  for (const Eigen::Vector2d& e :
+       {Eigen::Vector2d(400600, 5800350), Eigen::Vector2d(400450, 5800220),
+        Eigen::Vector2d(400777, 5800490)}) {
+    double lat, lon, gamma, k;
+    tm.Reverse(15.0, e.x() - 500000.0, e.y(), lat, lon, gamma, k);
+    const double expected =
+        100.0 + dtm.slope_lon * (lon - dtm.lon0) + dtm.slope_lat * (lat - dtm.lat0);
+    EXPECT_NEAR(g.HeightAt(e.x(), e.y()), expected, 0.01) << e.transpose();
+  }
+}
+
 TEST(BlockManifest, ASurfaceModelGivesTheTerrainUnderIt) {
   const std::string dir = testing::TempDir();
   BlockManifest m = SyntheticBlock(dir);

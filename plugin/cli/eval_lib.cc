@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "algorithms/core/error.h"
 #include "algorithms/eval/eval_report.h"
@@ -42,6 +43,7 @@ void CheckSameCrs(const std::string& a, const std::string& what_a, const std::st
 EvalReport RunEval(const EvalRequest& r) {
   std::string truth_path = r.truth, edges_path;
   EvalOptions options = r.options;
+  std::optional<BlockManifest> manifest;
   if (fs::is_directory(r.truth)) {
     truth_path = (fs::path(r.truth) / "groundtruth.gml").string();
     if (!fs::exists(truth_path)) {
@@ -49,13 +51,10 @@ EvalReport RunEval(const EvalRequest& r) {
     }
     const fs::path edges = fs::path(r.truth) / "groundtruth_edges.json";
     if (fs::exists(edges)) edges_path = edges.string();
-    // The simulated terrain is flat at the block's ground height: lines on
-    // it lie on a true surface.
+    // Lines on the simulated terrain (its height or its DTM) lie on a true
+    // surface.
     const fs::path block_json = fs::path(r.truth) / "block.json";
-    if (fs::exists(block_json) && !std::isfinite(options.lines.ground_height)) {
-      const BlockManifest manifest = ReadManifest(block_json.string());
-      if (manifest.ground_height) options.lines.ground_height = *manifest.ground_height;
-    }
+    if (fs::exists(block_json)) manifest = ReadManifest(block_json.string());
     const fs::path meta = fs::path(r.truth) / "simulation.json";
     if (options.gsd_m <= 0 && fs::exists(meta)) {
       std::ifstream f(meta);
@@ -88,6 +87,20 @@ EvalReport RunEval(const EvalRequest& r) {
     CheckSameCrs(set.crs, r.lines, truth.crs, truth_path);
     for (const auto& s : set.segments)
       lines.push_back({s.segment.a - origin, s.segment.b - origin});
+  }
+  if (manifest && !r.lines.empty() && !options.lines.ground.Known()) {
+    // Over the model and the lines, in the shifted coordinates.
+    Eigen::Vector4d box(bounds(0), bounds(1), bounds(3), bounds(4));
+    for (const Segment3& l : lines)
+      for (const Eigen::Vector3d& p : {l.a, l.b}) {
+        box.head<2>() = box.head<2>().cwiseMin(p.head<2>() + origin.head<2>());
+        box.tail<2>() = box.tail<2>().cwiseMax(p.head<2>() + origin.head<2>());
+      }
+    options.lines.ground = ManifestGroundInCrs(*manifest, box + Eigen::Vector4d(-5, -5, 5, 5));
+    if (options.lines.ground.grid) {
+      options.lines.ground.grid->x0 -= origin.x();
+      options.lines.ground.grid->y0 -= origin.y();
+    }
   }
   if (!edges_path.empty()) {
     // Wall edges and ground markings are true scene edges too: a 3D line on
