@@ -44,6 +44,17 @@ def test_simulate_writes_block_and_reports_progress(tiny_block):
     assert not fb.errors
 
 
+def test_simulate_on_a_slope_writes_a_dtm(tmp_path):
+    out = str(tmp_path / "slope")
+    res = processing.run("roofsweep:simulate", dict(TINY, TERRAIN_SLOPE=10, TERRAIN_ASPECT=60, OUTPUT=out),
+                         feedback=RecordingFeedback())
+    with open(res["BLOCK"]) as f:
+        assert json.load(f)["ground"] == {"dtm": "dtm.tif"}
+    assert os.path.isfile(os.path.join(out, "dtm.tif"))
+    with open(os.path.join(out, "simulation.json")) as f:
+        assert json.load(f)["terrain_slope_percent"] == 10
+
+
 def test_simulate_refuses_to_replace_a_foreign_folder(tmp_path):
     keep = tmp_path / "mine.txt"
     keep.write_text("precious")

@@ -20,7 +20,8 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
     HELP = ("Renders an oriented aerial block of LoD2 buildings with exactly known cameras and writes images, "
             "orientation, a block manifest (block.json), the ground truth (groundtruth.gml, groundtruth_edges.json) "
             "and the buildings' footprints (footprints.gpkg) into the output "
-            "folder. Unset numbers take the preset's value. An existing output folder is replaced only if it "
+            "folder. A terrain slope puts the town on a hillside and gives the block a DTM (dtm.tif) instead of "
+            "one ground height. Unset numbers take the preset's value. An existing output folder is replaced only if it "
             "is empty or an earlier simulation.")
     USES_OPTIONS = ("-preset", "-seed", "-o", "-overwrite")
 
@@ -36,6 +37,8 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
     GSD = "GSD"
     BUILDINGS = "BUILDINGS"
     OBLIQUES = "OBLIQUES"
+    TERRAIN_SLOPE = "TERRAIN_SLOPE"
+    TERRAIN_ASPECT = "TERRAIN_ASPECT"
     OUTPUT = "OUTPUT"
     BLOCK = "BLOCK"
     GROUNDTRUTH = "GROUNDTRUTH"
@@ -46,7 +49,10 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
     _NUMBERS = ((STRIPS, "-strips", "Flight strips", True, 1), (VIEWS, "-views", "Images per strip", True, 1),
                 (SIZE, "-size", "Image size (pixels, square)", True, 16),
                 (GSD, "-gsd", "Ground sample distance (m)", False, 0.001),
-                (BUILDINGS, "-buildings", "Generated buildings", True, 1))
+                (BUILDINGS, "-buildings", "Generated buildings", True, 1),
+                (TERRAIN_SLOPE, "-terrain_slope", "Terrain slope (%)", False, 0),
+                (TERRAIN_ASPECT, "-terrain_aspect", "Direction the terrain falls towards (degrees from north)",
+                 False, -360))
 
     def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterEnum(self.PRESET, self.tr("Preset"), options=list(PRESETS),
