@@ -297,12 +297,17 @@ Prop BoxProp(PropKind kind, const V2& c, const V2& dir, double len, double wid, 
   return p;
 }
 
-// Where a box of plan size len x wid (long side along `dir`) centred at c
-// stands: on its lowest corner, so that on a slope it never floats.
+// Where a box or a building over `r` stands: on its lowest corner, so that
+// on a slope it never floats.
+double LowestGround(const GroundLayout& g, const Rect& r) {
+  double low = std::numeric_limits<double>::infinity();
+  for (const V2& p : r.Corners()) low = std::min(low, g.HeightAt(p));
+  return low;
+}
+
+// The same for a box of plan size len x wid, long side along `dir`.
 double LowestGround(const GroundLayout& g, const V2& c, const V2& dir, double len, double wid) {
-  const V2 across(-dir.y(), dir.x());
-  return g.HeightAt(c) - std::abs(g.slope.dot(dir)) * len / 2 -
-         std::abs(g.slope.dot(across)) * wid / 2;
+  return LowestGround(g, Rect{c, dir, V2(len / 2, wid / 2)});
 }
 
 // A car: body plus glass cabin, 4.0-4.8 m long.
@@ -390,8 +395,7 @@ class TownBuilder {
     // house with its downhill basement wall showing.
     b.ground_z = std::numeric_limits<double>::infinity();
     for (const Rect& rect : FootprintRects(b))
-      for (const V2& c : rect.Corners())
-        b.ground_z = std::min(b.ground_z, scene_.ground.HeightAt(c));
+      b.ground_z = std::min(b.ground_z, LowestGround(scene_.ground, rect));
     const bool flat = b.shape == RoofShape::kFlat;
     lot.buildings.push_back({b, roof >= 0 ? roof : Roof(flat), wall >= 0 ? wall : Wall()});
   }

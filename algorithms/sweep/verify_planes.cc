@@ -652,12 +652,12 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     if (v.reason.empty() && o.trim_patch) trimmed = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
     if (v.reason.empty() && !height_fails && o.ground_alternative && block.ground.Known()) {
       const double zg = block.ground.HeightAt(c.x(), c.y());
-      // The ground under the patch, sloping as the DTM does across it.
-      const Ring2& seen = trimmed.size() >= 3 ? trimmed : p.patch;
-      double radius = 0;
-      for (const Eigen::Vector2d& q : seen) radius = std::max(radius, (q - c).norm());
-      const Eigen::Vector4d ground = block.ground.PlaneAt(c.x(), c.y(), radius);
       if (std::isfinite(zg) && zc - zg > 2 * v.offset_m) {
+        // The ground under the patch, sloping as the DTM does across it.
+        const Ring2& seen = trimmed.size() >= 3 ? trimmed : p.patch;
+        double radius = 0;
+        for (const Eigen::Vector2d& q : seen) radius = std::max(radius, (q - c).norm());
+        const Eigen::Vector4d ground = block.ground.PlaneAt(c.x(), c.y(), radius);
         // The same image evidence on the ground: the samples inside the
         // trimmed patch (SamplesOnTheGround).
         std::vector<char> inside(samples.size(), 1);

@@ -10,7 +10,6 @@
 #include <map>
 
 #include "algorithms/core/error.h"
-#include "algorithms/core/format.h"
 #include "algorithms/geometry/rotation.h"
 #include "algorithms/geometry/terrain_filter.h"
 #include "algorithms/geometry/view.h"
@@ -208,34 +207,17 @@ GroundModel ManifestGroundInCrs(const BlockManifest& m, const Eigen::Vector4d& b
   if (m.ground_height) ground.height = *m.ground_height;
   if (GroundRaster(m).empty()) return ground;
   DtmRaster dtm(manifest_paths::Resolve(GroundRaster(m), m.base_dir), m.crs);
+  // Resampled as for ManifestToBlock, in a frame without a CRS (the
+  // identity), a cell beyond the box all round so that HeightAt interpolates
+  // up to its border instead of holding the outermost cell centres' heights.
   const double d = dtm.cell_size();
-  const double w = bbox[2] - bbox[0], h = bbox[3] - bbox[1];
-  if (!(d > 0) || !(w > 0) || !(h > 0) || w / d > 8192 || h / d > 8192)
-    throw Error(Where(m) + ": the DTM cannot be sampled over " + StrFormat("%.0f x %.0f", w, h));
-  GroundModel::Grid g;
-  g.dx = g.dy = d;
-  // A cell beyond the box all round, so that HeightAt interpolates up to
-  // its border instead of holding the outermost cell centres' heights.
-  g.x0 = bbox[0] - d;
-  g.y0 = bbox[3] + d;
-  g.cols = static_cast<int>(std::ceil(w / d)) + 2;
-  g.rows = static_cast<int>(std::ceil(h / d)) + 2;
-  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
-  for (double x : {g.x0, g.x0 + g.cols * d})
-    for (double y : {g.y0 - g.rows * d, g.y0}) {
-      const Eigen::Vector2d p = dtm.CrsToPixel({x, y});
-      if (!p.allFinite()) continue;
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-  if (!(lo.x() <= hi.x())) throw Error(dtm.path() + ": cannot place the model on the DTM");
-  dtm.Load(lo.x() - 3, lo.y() - 3, hi.x() + 3, hi.y() + 3);
-  g.z.resize(static_cast<size_t>(g.rows) * g.cols);
-  for (int r = 0; r < g.rows; ++r)
-    for (int c = 0; c < g.cols; ++c)
-      g.z[static_cast<size_t>(r) * g.cols + c] = static_cast<float>(
-          dtm.SamplePixel(dtm.CrsToPixel({g.x0 + (c + 0.5) * d, g.y0 - (r + 0.5) * d})));
-  ground.grid = m.dsm.empty() ? g : TerrainFromSurfaceModel(g, m.terrain_window_m);
+  try {
+    const GroundModel::Grid g = ResampleDtm(dtm, LocalFrame("", Eigen::Vector3d::Zero()),
+                                            bbox + Eigen::Vector4d(-d, -d, d, d));
+    ground.grid = m.dsm.empty() ? g : TerrainFromSurfaceModel(g, m.terrain_window_m);
+  } catch (const Error& e) {
+    throw Error(Where(m) + (m.dsm.empty() ? ": /ground/dtm: " : ": /ground/dsm: ") + e.what());
+  }
   return ground;
 }
 

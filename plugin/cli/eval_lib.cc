@@ -89,7 +89,8 @@ EvalReport RunEval(const EvalRequest& r) {
       lines.push_back({s.segment.a - origin, s.segment.b - origin});
   }
   if (manifest && !r.lines.empty() && !options.lines.ground.Known()) {
-    // Over the model and the lines, in the shifted coordinates.
+    // Over the model and the lines, sampled in CRS coordinates; the grid
+    // then moves to the evaluator's origin like them.
     Eigen::Vector4d box(bounds(0), bounds(1), bounds(3), bounds(4));
     for (const Segment3& l : lines)
       for (const Eigen::Vector3d& p : {l.a, l.b}) {
