@@ -20,6 +20,8 @@
 #              start from them, so only the later stages are compared
 #              (MATCH=each: side B matches with its own program, into
 #              OUTDIR/lines-LABEL_B, to compare a change of the matching)
+# MATCH_ARGS_A/B extra `match` options of each side (MATCH_ARGS_B needs
+#              MATCH=each), e.g. MATCH_ARGS_A="-no_end_check"
 # JOBS         runs at a time (default: the number of cores)
 #
 # Each pair of runs starts from the same lines, once from the lines alone
@@ -63,11 +65,12 @@ printf '%s\0' "${BLOCK_LIST[@]}" | xargs -0 -P "$JOBS" -n 1 bash -c 'simulate "$
 # Jobs are fed to xargs NUL-separated, so that paths may hold spaces.
 # Outputs are written to a temporary name first, so that an interrupted
 # comparison does not reuse half a file.
-# PROGRAM LINES_DIR BLOCK SEED
+# PROGRAM LINES_DIR ARGS BLOCK SEED
 match_job() {
-  local rs=$1 dir=$2 b=$3 s=$4 f="$2/$3-s$4.gpkg"
+  local rs=$1 dir=$2 args=$3 b=$4 s=$5 f="$2/$4-s$5.gpkg"
   [[ -f $f ]] && return
-  "$rs" match "$OUT/blocks/$b" -seed "$s" -o "$f.tmp.gpkg" -overwrite -q
+  # shellcheck disable=SC2086 # ARGS are options, split on purpose
+  "$rs" match "$OUT/blocks/$b" -seed "$s" $args -o "$f.tmp.gpkg" -overwrite -q
   mv "$f.tmp.gpkg" "$f"
 }
 # PROGRAM LINES_DIR LABEL ARGS BLOCK SEED MODE
@@ -85,6 +88,8 @@ run_job() {
 export -f match_job run_job
 
 LINES_A="$OUT/lines" LINES_B="$OUT/lines"
+[[ -z ${MATCH_ARGS_B:-} || ${MATCH:-shared} == each ]] ||
+  { echo "ab-compare: MATCH_ARGS_B needs MATCH=each" >&2; exit 2; }
 if [[ ${MATCH:-shared} == each ]]; then
   LINES_B="$OUT/lines-$LABEL_B"
   mkdir -p "$LINES_B"
@@ -92,11 +97,12 @@ fi
 {
   for b in "${BLOCK_LIST[@]}"; do
     for s in "${SEEDS[@]}"; do
-      printf '%s\0%s\0%s\0%s\0' "$RS_A" "$LINES_A" "$b" "$s"
-      [[ $LINES_B == "$LINES_A" ]] || printf '%s\0%s\0%s\0%s\0' "$RS_B" "$LINES_B" "$b" "$s"
+      printf '%s\0%s\0%s\0%s\0%s\0' "$RS_A" "$LINES_A" "${MATCH_ARGS_A:-}" "$b" "$s"
+      [[ $LINES_B == "$LINES_A" ]] ||
+        printf '%s\0%s\0%s\0%s\0%s\0' "$RS_B" "$LINES_B" "${MATCH_ARGS_B:-}" "$b" "$s"
     done
   done
-} | xargs -0 -P "$JOBS" -n 4 bash -c 'match_job "$@"' _
+} | xargs -0 -P "$JOBS" -n 5 bash -c 'match_job "$@"' _
 
 jobs_file=$(mktemp)
 trap 'rm -f "$jobs_file"' EXIT

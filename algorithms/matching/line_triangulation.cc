@@ -38,7 +38,33 @@ void Ray(const Eigen::Matrix<double, 3, 4>& P, const Eigen::Vector2d& q, Eigen::
   if (M.determinant() < 0) *d = -*d;
 }
 
+// Position along the line A + t dir (|dir| = 1) of its point closest to the
+// ray of the ideal pixel q; NaN when they are parallel.
+double AlongLine(const Eigen::Matrix<double, 3, 4>& P, const Eigen::Vector2d& q,
+                 const Eigen::Vector3d& A, const Eigen::Vector3d& dir) {
+  Eigen::Vector3d c, d;
+  Ray(P, q, &c, &d);
+  const Eigen::Vector3d w = A - c;
+  const double b = dir.dot(d), dd = d.dot(d);
+  const double den = dd - b * b;
+  if (den < 1e-12 * dd) return std::numeric_limits<double>::quiet_NaN();
+  return (b * d.dot(w) - dd * dir.dot(w)) / den;
+}
+
 }  // namespace
+
+std::vector<std::pair<double, double>> ObservationSpans(const std::vector<LineObservation>& obs,
+                                                        const Segment3& line) {
+  std::vector<std::pair<double, double>> spans;
+  const Eigen::Vector3d dir = (line.b - line.a).normalized();
+  for (const LineObservation& o : obs) {
+    const double t0 = AlongLine(o.P, o.q0, line.a, dir), t1 = AlongLine(o.P, o.q1, line.a, dir);
+    spans.emplace_back(std::min(t0, t1), std::max(t0, t1));
+    if (!std::isfinite(t0) || !std::isfinite(t1))
+      spans.back().first = spans.back().second = std::numeric_limits<double>::quiet_NaN();
+  }
+  return spans;
+}
 
 LineEstimate TriangulateLine(const std::vector<LineObservation>& obs, const Segment3& initial,
                              int iterations) {
@@ -88,20 +114,13 @@ LineEstimate TriangulateLine(const std::vector<LineObservation>& obs, const Segm
   if (!dir.allFinite()) return out;
   // Endpoints: closest points of the line to the rays of all endpoints.
   double tmin = std::numeric_limits<double>::infinity(), tmax = -tmin;
-  for (const LineObservation& o : obs) {
+  for (const LineObservation& o : obs)
     for (const Eigen::Vector2d& q : {o.q0, o.q1}) {
-      Eigen::Vector3d c, d;
-      Ray(o.P, q, &c, &d);
-      // Closest points of line A + t dir and ray c + s d.
-      const Eigen::Vector3d w = A - c;
-      const double b = dir.dot(d), dd = d.dot(d);
-      const double den = dd - b * b;  // |dir| = 1
-      if (den < 1e-12 * dd) continue;
-      const double t = (b * d.dot(w) - dd * dir.dot(w)) / den;
+      const double t = AlongLine(o.P, q, A, dir);
+      if (!std::isfinite(t)) continue;
       tmin = std::min(tmin, t);
       tmax = std::max(tmax, t);
     }
-  }
   if (!(tmax > tmin)) return out;
   out.segment.a = A + tmin * dir;
   out.segment.b = A + tmax * dir;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "algorithms/geometry/segment3.h"
@@ -30,6 +31,13 @@ struct LineEstimate {
 // problem is tiny.
 LineEstimate TriangulateLine(const std::vector<LineObservation>& observations,
                              const Segment3& initial, int iterations = 20);
+
+// Where each observation lies along `line`: the positions (metres from
+// line.a towards line.b) of the points of the line closest to the rays of
+// its two endpoints, as (lower, upper). An observation whose rays run
+// parallel to the line gets (NaN, NaN).
+std::vector<std::pair<double, double>> ObservationSpans(
+    const std::vector<LineObservation>& observations, const Segment3& line);
 
 // Residual of one observation for the line through A and B, in pixels:
 // (distance of q0, distance of q1) to the projected line.

@@ -20,6 +20,7 @@
 #include "algorithms/matching/assignment.h"
 #include "algorithms/matching/colour_balance.h"
 #include "algorithms/matching/correlation.h"
+#include "algorithms/matching/end_check.h"
 #include "algorithms/matching/epipolar.h"
 #include "algorithms/matching/junction_completion.h"
 #include "algorithms/matching/junction_support.h"
@@ -591,6 +592,16 @@ MatchResult MatchLines(const Block& block, const std::vector<cv::Mat>& images,
     }
     res.lines = std::move(consistent);
   }
+  if (o.check_ends) {
+    std::vector<double> cut(res.lines.size(), 0);
+    tbb::parallel_for(size_t{0}, res.lines.size(),
+                      [&](size_t k) { cut[k] = CutUnconfirmedEnds(views, o, &res.lines[k]); });
+    for (double c : cut)
+      if (c > 0) {
+        ++res.funnel.ends_cut;
+        res.funnel.ends_cut_m += c;
+      }
+  }
   if (o.junction_completion) {
     JunctionCompletion jc = CompleteAtJunctions(views, res.lines, z_range, o);
     res.funnel.junction_candidates = jc.candidates;
@@ -668,6 +679,11 @@ std::string FormatFunnel(const MatchFunnel& f) {
                   f.residual_lines);
     out << buf;
   }
+  std::snprintf(buf, sizeof buf,
+                "  ends one view alone holds, not confirmed at the line's depth: %d lines cut "
+                "back by %.1f m\n",
+                f.ends_cut, f.ends_cut_m);
+  out << buf;
   std::snprintf(buf, sizeof buf,
                 "  junction completion: %lld unused segments anchored at both ends (or at one), "
                 "%lld verified, %d 3D lines added (%d of them horizontal from one junction)",

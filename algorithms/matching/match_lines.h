@@ -46,6 +46,9 @@ struct MatchFunnel {
   long long geometric = 0, chromatic = 0, correlation = 0, verified = 0, unambiguous = 0,
             assigned = 0;
   int lines_before_merge = 0, lines = 0;
+  // Lines cut back to the part two views hold, and the length removed.
+  int ends_cut = 0;
+  double ends_cut_m = 0;
   // Junction completion: unused segments anchored at both ends, those that
   // passed the verification, and the lines added (included in `lines`).
   long long junction_candidates = 0, junction_verified = 0;

@@ -157,6 +157,11 @@ struct MatchOptions {
   // At least this many views must observe a final line.
   int min_views = 2;
 
+  // Cut a line's ends that one view alone holds back to the part two views
+  // hold, unless the other views that see them confirm them at the line's
+  // depth (CutUnconfirmedEnds).
+  bool check_ends = true;
+
   // ---- junction completion (CompleteAtJunctions): segments no stereo pair
   // reached, reconstructed from the 3D lines their ends meet. The end must
   // come within junction_px of the anchor's piercing point, which must lie

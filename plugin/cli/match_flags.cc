@@ -20,6 +20,9 @@ void MatchFlags::Add(ArgParser& p, MatchOptions* o, EdgeOptions* edges) {
             "parallel edges of one polarity at a regular spacing on both sides)")
       .Flag("-no_junctions", &no_junctions_,
             "do not complete lines along the epipolar lines from the 3D lines at their ends")
+      .Flag("-no_end_check", &no_end_check_,
+            "keep a 3D line's ends that one view alone holds even when the views that see them "
+            "do not confirm them at the line's depth")
       .Flag("-no_junction_ranking", &no_junction_ranking_,
             "rank rival matches of equal support by correlation alone, not first by how many of "
             "their ends meet other 3D lines")
@@ -42,6 +45,7 @@ void MatchFlags::Apply(const ArgParser& p) const {
   options_->init_from_best_correlation = init_best_;
   options_->junction_completion = !no_junctions_;
   options_->junction_ranking = !no_junction_ranking_;
+  options_->check_ends = !no_end_check_;
   options_->match_texture = match_texture_;
   options_->correlate_lightness = !no_lightness_;
   edges_->coarse_fusion = coarse_edges_;

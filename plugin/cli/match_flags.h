@@ -21,7 +21,7 @@ class MatchFlags {
   EdgeOptions* edges_ = nullptr;
   bool coarse_edges_ = false;
   bool init_best_ = false, no_junctions_ = false, no_junction_ranking_ = false,
-       match_texture_ = false, no_lightness_ = false;
+       no_end_check_ = false, match_texture_ = false, no_lightness_ = false;
   int seed_ = 0;
 };
 
