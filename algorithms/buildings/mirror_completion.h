@@ -21,9 +21,16 @@ struct MirrorCompletionOptions {
   double ridge_min_below = 0.7;
   // No proposal where a plane within same_angle_deg covers same_cover of
   // the mirrored patch already, nor for mirrored patches under min_patch_m2.
+  // The verification decides on a proposal, so the floor only spares it
+  // patches too small to hold any face. At 4 m2 it kept out the gabled
+  // garden sheds (faces of about 1.2 x 2.6 m), whose one face found was
+  // then under the buildings' minimum footprint of 5 m2 and the shed was
+  // lost; at 2 m2, 30 paired runs (ten blocks x matching seeds 1-3) gained
+  // plane quality +0.18 +- 0.10 from matched lines and +0.63 +- 0.19 with
+  // footprints, every plane added a true one, none lost (1 m2: the same).
   double same_angle_deg = 5.0;
   double same_cover = 0.5;
-  double min_patch_m2 = 4.0;
+  double min_patch_m2 = 2.0;
 };
 
 // Completion by symmetry: most pitched roofs are symmetric about the ridge,

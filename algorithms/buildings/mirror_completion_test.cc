@@ -71,5 +71,35 @@ TEST(MirroredFaces, NothingWithoutARidgeOrWhereTheOtherFaceIsFound) {
   EXPECT_TRUE(MirroredFaces({flat}).empty());
 }
 
+// A garden shed's gable: 2.6 m along x, each face 1.2 m deep at 34 degrees
+// (the simulator's outbuildings), its patch 3.4 m2.
+TEST(MirroredFaces, AShedsFaceProposesItsOtherFace) {
+  RoofPlaneHypothesis p;
+  p.id = "shed";
+  const double rise = std::tan(0.6) * 1.2;
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -rise, 1.2).normalized();
+  p.plane << n, -n.dot(Eigen::Vector3d(0, 1.2, 2.2 + rise));
+  p.patch = {{0, 0}, {2.6, 0}, {2.6, 1.3}, {0, 1.3}};
+  p.lines = 2;
+  p.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(2.6, 0)},
+                {Eigen::Vector2d(0.1, 1.2), Eigen::Vector2d(2.5, 1.2)}};
+  p.score = 1;
+  const std::vector<RoofPlaneHypothesis> out = MirroredFaces({p});
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(std::abs(SignedArea(out[0].patch)), 2.6 * 1.2, 1e-9);
+  EXPECT_NEAR(PlaneZ(out[0], 1, 2.4), 2.2, 1e-9);
+
+  // A face of a tenth of that proposes nothing.
+  RoofPlaneHypothesis tiny = p;
+  for (auto& v : tiny.patch) v *= std::sqrt(0.1);
+  for (auto& l : tiny.lines_xy)
+    for (auto& v : l) v *= std::sqrt(0.1);
+  MirrorCompletionOptions short_ridge;
+  short_ridge.ridge_min_length_m = 0.5;
+  EXPECT_TRUE(MirroredFaces({tiny}, short_ridge).empty());
+  short_ridge.min_patch_m2 = 0.1;  // it is the size that stops it
+  EXPECT_EQ(MirroredFaces({tiny}, short_ridge).size(), 1u);
+}
+
 }  // namespace
 }  // namespace roofsweep
