@@ -240,6 +240,43 @@ TEST(AssembleBuildings, AShortLinedPlaneStandsAloneWhenItsLinesMakeASquareCorner
   EXPECT_TRUE(AssembleBuildings({garage}, Flat(0), off).model.buildings.empty());
 }
 
+TEST(AssembleBuildings, AFaceJoinsAShortLinedRoofKeptForItsSquareCorner) {
+  // A garden shed, 2.6 x 2.4 m, gable along x at 34 deg, eaves at 2.2 m.
+  // The south face holds its eave and a verge (a square corner); the north
+  // face, mirrored from it, only the ridge. Both lines are under 3 m.
+  const double ridge_z = 2.2 + 1.2 * std::tan(34 * M_PI / 180);
+  RoofPlaneHypothesis south =
+      Hyp(SlopedPlane({0, 1.2, ridge_z}, 34, -90), {{0, 0}, {2.6, 0}, {2.6, 1.2}, {0, 1.2}});
+  south.longest_line_m = 2.5;
+  south.lines_xy = {{Eigen::Vector2d(0.05, 0), Eigen::Vector2d(2.55, 0)},
+                    {Eigen::Vector2d(2.6, 0.05), Eigen::Vector2d(2.6, 1.15)}};
+  RoofPlaneHypothesis north =
+      Hyp(SlopedPlane({0, 1.2, ridge_z}, 34, 90), {{0, 1.2}, {2.6, 1.2}, {2.6, 2.4}, {0, 2.4}});
+  north.longest_line_m = 2.5;
+  north.lines_xy = {{Eigen::Vector2d(0.05, 1.2), Eigen::Vector2d(2.55, 1.2)}};
+  AssemblyResult r = AssembleBuildings({south, north}, Flat(0));
+  EXPECT_TRUE(r.rejected.empty()) << r.rejected.front();
+  ASSERT_EQ(Solids(r).size(), 1u);
+  EXPECT_EQ(Solids(r)[0].roof_type, roof_type::kGabled);
+  EXPECT_NEAR(Solids(r)[0].double_attributes.at("footprint_m2"), 2.6 * 2.4, 1e-6);
+  ExpectAllValid(r);
+  AssemblyOptions off;
+  off.join_gable_to_corners = false;
+  EXPECT_EQ(AssembleBuildings({south, north}, Flat(0), off).rejected.size(), 2u);
+  // A facet beside it that is not the gable's other face (a tree crown's)
+  // does not join it.
+  RoofPlaneHypothesis facet = north;
+  facet.plane = SlopedPlane({2.6, 1.8, 2.6}, 34, 0);
+  facet.patch = ConvexHull({{2.6, 0}, {3.8, 0}, {3.8, 2.4}, {2.6, 2.4}});
+  r = AssembleBuildings({south, facet}, Flat(0));
+  EXPECT_EQ(r.rejected.size(), 2u);
+  // Without the square corner neither face has a roof to join.
+  south.lines_xy.pop_back();
+  r = AssembleBuildings({south, north}, Flat(0));
+  EXPECT_EQ(r.rejected.size(), 2u);
+  EXPECT_TRUE(r.model.buildings.empty());
+}
+
 TEST(AssembleBuildings, UnsupportedPlaneIsDroppedNotAllowedToCutTheRoof) {
   // A false steep plane seen only over a small patch at the gable's corner
   // would, in a plain lower envelope, slice off most of the roof.
