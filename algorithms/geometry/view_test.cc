@@ -118,8 +118,8 @@ TEST(GroundModel, PlaneAtFollowsTheSlope) {
   const Eigen::Vector4d p = g.PlaneAt(2, -3, 6);
   EXPECT_GT(p[2], 0);
   EXPECT_NEAR(p.head<3>().norm(), 1, 1e-12);
-  for (const Eigen::Vector2d q : {Eigen::Vector2d(2, -3), Eigen::Vector2d(8, -3),
-                                  Eigen::Vector2d(-4, 3), Eigen::Vector2d(10, -9)}) {
+  for (const Eigen::Vector2d& q : {Eigen::Vector2d(2, -3), Eigen::Vector2d(8, -3),
+                                   Eigen::Vector2d(-4, 3), Eigen::Vector2d(10, -9)}) {
     const double z = -(p[0] * q.x() + p[1] * q.y() + p[3]) / p[2];
     EXPECT_NEAR(z, g.HeightAt(q.x(), q.y()), 1e-4) << q.transpose();
   }

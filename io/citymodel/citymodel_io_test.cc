@@ -45,8 +45,9 @@ TEST(CityModelIo, RoundTripThroughAllFormats) {
   for (const auto& bl : d.buildings)
     EXPECT_EQ(bl.string_attributes.at("roofsweep_validity"), "valid");
   std::string log;
-  if (testing::XmllintCityGml(dir + "/d.gml", &log) >= 0)
+  if (testing::XmllintCityGml(dir + "/d.gml", &log) >= 0) {
     EXPECT_EQ(testing::XmllintCityGml(dir + "/d.gml", &log), 0) << log;
+  }
 }
 
 // A building of two parts (the solids over one footprint) keeps its parts,
@@ -78,9 +79,13 @@ TEST(CityModelIo, BuildingPartsRoundTripThroughEveryFormat) {
   }
   std::string log;
   const int rc = testing::XmllintCityGml(dir + "/p.gml", &log);
-  if (rc >= 0) EXPECT_EQ(rc, 0) << log;
+  if (rc >= 0) {
+    EXPECT_EQ(rc, 0) << log;
+  }
   const int cj = testing::ValidateCityJson(testing::ReadText(dir + "/p.city.json"), false, &log);
-  if (cj >= 0) EXPECT_EQ(cj, 0) << log;
+  if (cj >= 0) {
+    EXPECT_EQ(cj, 0) << log;
+  }
   // The flat layout keeps the parts and their attributes; the whole keeps its id.
   WriteCityModel(m, dir + "/p.fgb");
   CityModel flat = ReadCityModel(dir + "/p.fgb");
@@ -110,7 +115,9 @@ TEST(CityModelIo, RealBerlinTileConvertsToEveryFormat) {
   }
   std::string log;
   const int rc = testing::XmllintCityGml(dir + "/b.gml", &log);
-  if (rc >= 0) EXPECT_EQ(rc, 0) << log;  // the source fails (no uom); ours must not
+  if (rc >= 0) {  // the source fails (no uom); ours must not
+    EXPECT_EQ(rc, 0) << log;
+  }
 }
 
 TEST(CityModelIo, ExistingOutputIsNeverReplacedSilently) {

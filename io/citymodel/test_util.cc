@@ -100,7 +100,9 @@ void ExpectBuildingsNear(const Building& a, const Building& b, bool surface_ids,
     const Surface& sa = a.surfaces[s];
     const Surface& sb = b.surfaces[s];
     EXPECT_EQ(sa.type, sb.type);
-    if (surface_ids) EXPECT_EQ(sa.id, sb.id);
+    if (surface_ids) {
+      EXPECT_EQ(sa.id, sb.id);
+    }
     ASSERT_EQ(sa.polygons.size(), sb.polygons.size());
     for (size_t p = 0; p < sa.polygons.size(); ++p) {
       const auto& pa = sa.polygons[p];

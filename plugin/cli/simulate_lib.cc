@@ -281,8 +281,11 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   SegmentSet edges;
   edges.crs = crs;
   for (const sim::TrueEdge& e : sim.truth.edges) {
-    edges.segments.push_back(
-        {{frame.ToCrs(e.a), frame.ToCrs(e.b)}, sim::EdgeKindName(e.kind), e.building, {}});
+    LabelledSegment s;
+    s.segment = {frame.ToCrs(e.a), frame.ToCrs(e.b)};
+    s.kind = sim::EdgeKindName(e.kind);
+    s.building = e.building;  // rms_px stays NaN: a true edge has no residual
+    edges.segments.push_back(std::move(s));
   }
   WriteSegmentsJson(edges, dir + "/groundtruth_edges.json", false);
 
