@@ -245,15 +245,16 @@ bool CrossAlongMeet(const RoofPlaneHypothesis& p, const Ring2& grown_p,
 // within gable_max_azimuth_deg (AssemblyOptions::join_gable_to_corners).
 bool GableFaces(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
                 const AssemblyOptions& o) {
-  const Eigen::Vector3d np = p.plane.head<3>().normalized() * (p.plane[2] < 0 ? -1 : 1);
-  const Eigen::Vector3d nq = q.plane.head<3>().normalized() * (q.plane[2] < 0 ? -1 : 1);
-  const double sp = std::acos(std::min(1.0, np.z())), sq = std::acos(std::min(1.0, nq.z()));
-  const double deg = M_PI / 180;
-  if (std::min(sp, sq) < o.gable_min_slope_deg * deg ||
-      std::abs(sp - sq) > o.gable_max_slope_difference_deg * deg)
+  // PlausiblePlanes has checked both normals to be unit vectors; turned up.
+  const Eigen::Vector3d np = p.plane.head<3>() * (p.plane[2] < 0 ? -1 : 1);
+  const Eigen::Vector3d nq = q.plane.head<3>() * (q.plane[2] < 0 ? -1 : 1);
+  const double sp = std::acos(std::clamp(np.z(), -1.0, 1.0));
+  const double sq = std::acos(std::clamp(nq.z(), -1.0, 1.0));
+  if (std::min(sp, sq) < o.gable_min_slope_deg * kDeg ||
+      std::abs(sp - sq) > o.gable_max_slope_difference_deg * kDeg)
     return false;
   return np.head<2>().normalized().dot(nq.head<2>().normalized()) <=
-         -std::cos(o.gable_max_azimuth_deg * deg);
+         -std::cos(o.gable_max_azimuth_deg * kDeg);
 }
 
 // Two supporting lines that form a right-angled corner in plan (see
@@ -333,30 +334,25 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
   // face of its gable (a garden shed's, whose one line is often the ridge)
   // may join it. Only that face: tree crowns hold chains of small facets
   // with square corners between them.
-  std::vector<char> kept_attached(attached.size(), 0);
+  std::vector<char> cornered(attached.size());
   for (size_t a = 0; a < attached.size(); ++a)
-    kept_attached[a] = o.keep_right_corners && HasRightCorner(planes[attached[a]], o);
-  const std::vector<char> cornered = kept_attached;
+    cornered[a] = o.keep_right_corners && HasRightCorner(planes[attached[a]], o);
   for (size_t a = 0; a < attached.size(); ++a) {
-    if (kept_attached[a]) continue;
-    const RoofPlaneHypothesis& p = planes[attached[a]];
+    const int i = attached[a];
+    const RoofPlaneHypothesis& p = planes[i];
     const Ring2 grown = GrowConvex(p.patch, o.adjacency_gap_m);
     bool joins = false;
     for (size_t k = 0; k < n_keep && !joins; ++k) {
       const RoofPlaneHypothesis& q = planes[keep[k]];
       joins = PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o);
     }
-    for (size_t b = 0; b < attached.size() && !joins && o.join_gable_to_corners; ++b) {
+    for (size_t b = 0; b < attached.size() && !joins && !cornered[a] && o.join_gable_to_corners;
+         ++b) {
       const RoofPlaneHypothesis& q = planes[attached[b]];
       joins = cornered[b] && GableFaces(p, q, o) &&
               PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o);
     }
-    kept_attached[a] = joins;
-  }
-  for (size_t a = 0; a < attached.size(); ++a) {
-    const int i = attached[a];
-    const RoofPlaneHypothesis& p = planes[i];
-    if (kept_attached[a]) {
+    if (joins || cornered[a]) {
       keep.push_back(i);
     } else {
       rejected->push_back((p.id.empty() ? StrFormat("plane %d", i) : p.id) +
