@@ -11,9 +11,11 @@
 # LABEL_A/B    result folders under OUTDIR (default A and B). Runs whose
 #              evaluation is already there are not run again, so a baseline
 #              can be reused: give it a label of its own.
-# BLOCKS       simulated blocks, PRESET-SEED, berlin-SEED or slope-SEED (the
+# BLOCKS       simulated blocks, PRESET-SEED, berlin-SEED, slope-SEED (the
 #              realistic preset on an 8 % slope falling towards azimuth
-#              47 x SEED mod 360, with a DTM) (default: the ten below);
+#              47 x SEED mod 360, with a DTM) or hills-SEED (the realistic
+#              preset over hills spanning up to 12 m, with a DTM) (default:
+#              the ten below);
 #              simulated once into OUTDIR/blocks
 # MATCH_SEEDS  matching seeds (default "1 2 3"); the lines are matched once
 #              per block and seed by RS_A into OUTDIR/lines, and both sides
@@ -54,6 +56,8 @@ simulate() {
   elif [[ $preset == slope ]]; then
     "$RS_A" simulate -preset realistic -seed "$seed" -terrain_slope 8 \
       -terrain_aspect $((47 * seed % 360)) -o "$OUT/blocks/$name" -q
+  elif [[ $preset == hills ]]; then
+    "$RS_A" simulate -preset realistic -seed "$seed" -terrain_relief 12 -o "$OUT/blocks/$name" -q
   else
     "$RS_A" simulate -preset "$preset" -seed "$seed" -o "$OUT/blocks/$name" -q
   fi

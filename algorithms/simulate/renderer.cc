@@ -98,6 +98,9 @@ struct Renderer::Impl {
   V3 sun, sun_u, sun_v;   // direction to the sun and two axes across it
   double sun_radius = 0;  // rad
   double top_z = 0;       // highest vertex of the scene
+  // Sums of the hills' positive and negative amplitudes: the terrain lies
+  // within [plane - hill_down, plane + hill_up].
+  double hill_up = 0, hill_down = 0;
   uint32_t ground_seed = 0;
 
   void AddPolygonFace(FaceInfo f, const Polygon3& poly, std::vector<Bvh::Triangle>& tris) {
@@ -251,6 +254,8 @@ struct Renderer::Impl {
       terrain.normal = V3(-scene.ground.slope.x(), -scene.ground.slope.y(), 1).normalized();
       terrain.d = -terrain.normal.z() * scene.ground.z;
     }
+    for (const Hill& k : scene.ground.hills)
+      (k.amplitude > 0 ? hill_up : hill_down) += std::abs(k.amplitude);
     terrain.material = scene.ground.base_material;
     faces.push_back(terrain);
     ground_seed = static_cast<uint32_t>(scene.materials.empty() ? 1 : scene.materials[0].seed);
@@ -288,11 +293,61 @@ struct Renderer::Impl {
     ground.Build(scene.ground, scene.area);
   }
 
-  Hit Trace(const V3& o, const V3& d) const {
-    Hit h;
+  // Where a ray meets the terrain (kInf: it does not). On a plane exactly;
+  // over hills by Newton's method on the ray's height above the ground,
+  // started where it meets the plane under the hills and safeguarded by a
+  // march in steps of 0.25 m of height. Rays going up never meet it: the
+  // sun's rays from the ground cast no shadows of hills (nor do they on the
+  // renderer's plane).
+  double TerrainHit(const V3& o, const V3& d) const {
     const FaceInfo& terrain = faces[0];
     const double den = terrain.normal.dot(d);
-    const double t_ground = den < 0 ? -(terrain.normal.dot(o) + terrain.d) / den : kInf;
+    if (!(den < 0)) return kInf;
+    const double t_plane = -(terrain.normal.dot(o) + terrain.d) / den;
+    const GroundLayout& g = scene.ground;
+    if (g.Planar()) return t_plane;
+    auto above = [&](double t) {
+      const V3 p = o + t * d;
+      return p.z() - g.HeightAt(p.head<2>());
+    };
+    // The plane raised and lowered by the hills' extremes brackets the hit.
+    const double k = terrain.normal.z() / -den;  // ray length per metre of plane height
+    const double t_hi = std::max(0.0, t_plane - k * hill_up);
+    const double t_lo = t_plane + k * hill_down;
+    double t = t_plane;
+    for (int i = 0; i < 12; ++i) {
+      const V3 p = o + t * d;
+      const double f = p.z() - g.HeightAt(p.head<2>());
+      if (std::abs(f) < 1e-5) {
+        if (t >= t_hi && t <= t_lo) return t;
+        break;
+      }
+      const double df = d.z() - g.GradientAt(p.head<2>()).dot(d.head<2>());
+      if (!(df < 0)) break;
+      t -= f / df;
+    }
+    // Grazing rays: the first sign change from the top of the bracket.
+    const double dt = 0.25 / std::max(1e-3, -d.z());
+    double t0 = t_hi;
+    if (above(t0) <= 0) return t0;
+    for (double t1 = t_hi + dt;; t1 += dt) {
+      t1 = std::min(t1, t_lo);
+      const double f1 = above(t1);
+      if (f1 <= 0) {
+        for (int i = 0; i < 40; ++i) {
+          const double tm = 0.5 * (t0 + t1);
+          (above(tm) > 0 ? t0 : t1) = tm;
+        }
+        return 0.5 * (t0 + t1);
+      }
+      if (t1 >= t_lo) return kInf;
+      t0 = t1;
+    }
+  }
+
+  Hit Trace(const V3& o, const V3& d) const {
+    Hit h;
+    const double t_ground = TerrainHit(o, d);
     Bvh::Hit bh;
     const float t_max = static_cast<float>(std::min(t_ground * 1.0001 + 0.01, 1e7));
     if (bvh.Intersect(o.cast<float>(), d.cast<float>(), 0.0f, t_max, &bh)) {
@@ -330,6 +385,10 @@ struct Renderer::Impl {
     uint32_t seed = f.seed;
     switch (f.kind) {
       case FaceKind::kTerrain:
+        if (!scene.ground.Planar()) {
+          const Eigen::Vector2d gr = scene.ground.GradientAt(h.p.head<2>());
+          n = V3(-gr.x(), -gr.y(), 1).normalized();
+        }
         material = ground.MaterialAt(h.p.head<2>());
         u = static_cast<float>(h.p.x());
         v = static_cast<float>(h.p.y());

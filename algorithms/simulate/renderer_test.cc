@@ -343,11 +343,12 @@ TEST(Renderer, DepthAndFaceMapsMatchTheScene) {
 // On a slope the terrain seen in every pixel lies at the slope's height
 // there: flat terrain at the origin's height would be off by up to 4 m at
 // the image corners of this view.
-TEST(Renderer, TerrainFollowsTheSlope) {
+void ExpectTerrainAtItsHeight(const Eigen::Vector2d& slope, double relief) {
   SceneOptions so;
   so.extent_x = so.extent_y = 80;
   so.building_count = 4;
-  so.ground_slope = Eigen::Vector2d(0.06, -0.05);
+  so.ground_slope = slope;
+  so.terrain_relief_m = relief;
   const Scene scene = GenerateScene(so, 5);
   const Renderer renderer(scene, RenderOptions{});
   const Camera cam = TestCamera(256, 300);
@@ -367,6 +368,12 @@ TEST(Renderer, TerrainFollowsTheSlope) {
   EXPECT_GT(checked, 300);
   EXPECT_LT(worst, 0.02);
 }
+
+TEST(Renderer, TerrainFollowsTheSlope) { ExpectTerrainAtItsHeight({0.06, -0.05}, 0); }
+
+// Over hills the ray meets the curved ground, not the plane under it (off
+// by metres here), with the slope as well.
+TEST(Renderer, TerrainFollowsTheHills) { ExpectTerrainAtItsHeight({0.03, 0.02}, 15); }
 
 }  // namespace
 }  // namespace sim

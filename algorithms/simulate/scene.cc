@@ -863,6 +863,23 @@ Scene GenerateScene(const SceneOptions& o, uint64_t seed) {
   scene.ground.z = o.ground_z;
   scene.ground.slope = o.ground_slope;
   const double ex = o.extent_x / 2, ey = o.extent_y / 2;
+  if (!std::isfinite(o.terrain_relief_m) || o.terrain_relief_m < 0 || o.terrain_relief_m > 50)
+    throw Error("simulate: the terrain relief must be 0..50 m");
+  if (o.terrain_relief_m > 0) {
+    // A stream of its own, so that the town on flat ground stays the same
+    // for a seed. About one hill per 100 x 100 m, over the area and a
+    // margin that the images see past it; amplitudes of both signs.
+    Rng hill_rng(Hash(seed, 0x4177));
+    const double mx = ex + 100, my = ey + 100;
+    const int n = std::max(3, static_cast<int>(std::lround(4 * mx * my / 1e4)));
+    for (int i = 0; i < n; ++i) {
+      Hill h;
+      h.centre = V2(hill_rng.Uniform(-mx, mx), hill_rng.Uniform(-my, my));
+      h.sigma = hill_rng.Uniform(35, 90);
+      h.amplitude = hill_rng.Uniform(-0.5, 0.5) * o.terrain_relief_m;
+      scene.ground.hills.push_back(h);
+    }
+  }
   scene.area << -ex, -ey, ex, ey;
   Rng rng(Hash(seed, 0x5ce7e));
 
@@ -1064,8 +1081,8 @@ Scene GenerateScene(const SceneOptions& o, uint64_t seed) {
 }
 Scene SceneFromCityModel(const CityModel& city, const SceneOptions& o, uint64_t seed) {
   if (city.buildings.empty()) throw Error("simulate: the city model has no buildings");
-  if (!o.ground_slope.isZero())
-    throw Error("simulate: a ground slope needs a generated town, not a city model");
+  if (!o.ground_slope.isZero() || o.terrain_relief_m > 0)
+    throw Error("simulate: a ground slope or relief needs a generated town, not a city model");
   Scene scene;
   AddBaseMaterials(scene, seed);
   scene.city = city;
@@ -1100,21 +1117,47 @@ Scene SceneFromCityModel(const CityModel& city, const SceneOptions& o, uint64_t 
   return scene;
 }
 
+namespace {
+
+// A plan edge laid on the terrain: one piece on a plane, pieces of at most
+// 2 m over hills (their sigma is 35 m or more, so a 2 m chord stays within
+// a centimetre of the ground even at 50 m of relief, 3 mm at 12 m).
+std::vector<TrueEdge> TerrainPieces(const GroundLayout& g, const TrueEdge& e) {
+  const V2 a = e.a.head<2>(), b = e.b.head<2>();
+  const int n = g.Planar() ? 1 : std::max(1, static_cast<int>(std::ceil((b - a).norm() / 2.0)));
+  std::vector<TrueEdge> out;
+  for (int i = 0; i < n; ++i) {
+    TrueEdge piece = e;
+    const V2 p0 = a + (b - a) * (double(i) / n), p1 = a + (b - a) * (double(i + 1) / n);
+    piece.a = V3(p0.x(), p0.y(), g.HeightAt(p0));
+    piece.b = V3(p1.x(), p1.y(), g.HeightAt(p1));
+    out.push_back(piece);
+  }
+  return out;
+}
+
+}  // namespace
+
 SceneTruth TruthOf(const Scene& scene) {
   SceneTruth t;
   t.city = scene.city;
   t.edges = ExtractBuildingEdges(scene.city);
-  if (!scene.ground.slope.isZero()) {
+  if (!scene.ground.slope.isZero() || !scene.ground.Planar()) {
     // What the images show of a wall's foot is where it enters the terrain,
-    // above the building's base everywhere but at its lowest corner. The
-    // terrain is a plane, so the cut of a straight edge is straight.
+    // above the building's base everywhere but at its lowest corner. On a
+    // plane the cut of a straight edge is straight; over hills it bends, so
+    // it is followed in pieces (TerrainPieces).
+    std::vector<TrueEdge> cut;
     for (TrueEdge& e : t.edges) {
-      if (e.kind != EdgeKind::kFootprint && e.kind != EdgeKind::kWallCorner) continue;
-      for (V3* p : {&e.a, &e.b}) {
-        const double g = scene.ground.HeightAt(p->head<2>());
-        if (e.kind == EdgeKind::kFootprint || p->z() < g) p->z() = g;
+      if (e.kind == EdgeKind::kWallCorner) {
+        for (V3* p : {&e.a, &e.b}) p->z() = std::max(p->z(), scene.ground.HeightAt(p->head<2>()));
+      } else if (e.kind == EdgeKind::kFootprint) {
+        for (TrueEdge& piece : TerrainPieces(scene.ground, e)) cut.push_back(piece);
+        continue;
       }
+      cut.push_back(e);
     }
+    t.edges = std::move(cut);
   }
   t.roof_planes = ExtractRoofPlanes(scene.city);
   // Ground markings: region borders where the material really changes,
@@ -1137,10 +1180,10 @@ SceneTruth TruthOf(const Scene& scene) {
         if (s1 - s0 < 0.1) return;
         const V2 p0 = a + s0 * d, p1 = a + s1 * d;
         TrueEdge e;
-        e.a = V3(p0.x(), p0.y(), scene.ground.HeightAt(p0));
-        e.b = V3(p1.x(), p1.y(), scene.ground.HeightAt(p1));
+        e.a = V3(p0.x(), p0.y(), 0);
+        e.b = V3(p1.x(), p1.y(), 0);
         e.kind = EdgeKind::kGroundMarking;
-        t.edges.push_back(e);
+        for (TrueEdge& piece : TerrainPieces(scene.ground, e)) t.edges.push_back(piece);
       };
       const int steps = static_cast<int>(std::ceil(len / step));
       for (int i = 0; i <= steps; ++i) {

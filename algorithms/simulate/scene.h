@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -37,15 +38,41 @@ struct GroundRegion {
   }
 };
 
+// A smooth hill (a hollow when the amplitude is negative) on the terrain:
+// amplitude x exp(-|p - centre|^2 / (2 sigma^2)).
+struct Hill {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double sigma = 50;
+  double amplitude = 0;
+};
+
 // Terrain: a plane through height z at the origin rising by `slope` (dz/dx,
-// dz/dy; zero: flat), with a base material and regions on top (a later
-// region wins where they overlap). A plane keeps the renderer's terrain hit
-// exact and ground markings straight in 3D, and still gives every point its
-// own ground height, which a block on a hillside needs tested.
+// dz/dy; zero: flat), with smooth hills on it, a base material and regions
+// on top (a later region wins where they overlap). Every point has its own
+// ground height, which a block on a hillside needs tested; the hills make
+// that height vary across a building as real relief does, so that no plane
+// fitted to the ground explains the block.
 struct GroundLayout {
   double z = 0;
   Eigen::Vector2d slope = Eigen::Vector2d::Zero();
-  double HeightAt(const Eigen::Vector2d& p) const { return z + slope.dot(p); }
+  std::vector<Hill> hills;
+  double HeightAt(const Eigen::Vector2d& p) const {
+    double h = z + slope.dot(p);
+    for (const Hill& k : hills)
+      h += k.amplitude * std::exp(-(p - k.centre).squaredNorm() / (2 * k.sigma * k.sigma));
+    return h;
+  }
+  // d HeightAt / d (x, y).
+  Eigen::Vector2d GradientAt(const Eigen::Vector2d& p) const {
+    Eigen::Vector2d g = slope;
+    for (const Hill& k : hills) {
+      const Eigen::Vector2d r = p - k.centre;
+      const double s2 = k.sigma * k.sigma;
+      g -= k.amplitude * std::exp(-r.squaredNorm() / (2 * s2)) / s2 * r;
+    }
+    return g;
+  }
+  bool Planar() const { return hills.empty(); }
   int base_material = -1;
   std::vector<GroundRegion> regions;
   int MaterialAt(const Eigen::Vector2d& p) const;  // linear scan; renderer indexes it
@@ -119,6 +146,11 @@ struct SceneOptions {
   // stands on the lowest ground under its footprint, so its walls reach the
   // terrain all round; cars, hedges and trees stand on the ground under them.
   Eigen::Vector2d ground_slope = Eigen::Vector2d::Zero();
+  // Relief on top of that plane: smooth hills and hollows (Hill) whose
+  // heights span up to terrain_relief_m, 35-90 m wide (sigma), so that the
+  // ground under one building varies by centimetres to a metre, as on a
+  // real hillside town. 0: none.
+  double terrain_relief_m = 0;
   // Cars, hedges, garden beds, paths, drains (clutter on the ground).
   bool clutter = true;
   // Chimneys, solar panels, roof windows, roof-top boxes (not roof planes).

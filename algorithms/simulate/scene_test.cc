@@ -160,16 +160,18 @@ TEST(Scene, CarsStayOffBuildings) {
   EXPECT_GT(cars, 20);
 }
 
-// On a slope every building stands on the lowest ground under it (its walls
-// reach the terrain all round), cars and hedges touch the ground without
-// floating, trees stand on it, and the truth's wall feet and ground markings
-// lie on it. The slope only lifts things: the town in plan is the flat one.
-TEST(Scene, OnASlopeEverythingStandsOnTheGround) {
+// On a slope or over hills every building stands on the lowest ground
+// under it (its walls reach the terrain all round), cars and hedges touch
+// the ground without floating, trees stand on it, and the truth's wall feet
+// and ground markings lie on it, along their whole length. The terrain only
+// lifts things: the town in plan is the flat one.
+void ExpectEverythingOnTheGround(const Eigen::Vector2d& slope, double relief) {
   SceneOptions o;
   o.extent_x = o.extent_y = 140;
   o.building_count = 40;
   const Scene flat = GenerateScene(o, 6);
-  o.ground_slope = Eigen::Vector2d(0.07, -0.04);
+  o.ground_slope = slope;
+  o.terrain_relief_m = relief;
   const Scene s = GenerateScene(o, 6);
   const GroundLayout& g = s.ground;
   ASSERT_EQ(s.city.buildings.size(), flat.city.buildings.size());
@@ -213,9 +215,40 @@ TEST(Scene, OnASlopeEverythingStandsOnTheGround) {
     if (e.kind != EdgeKind::kFootprint && e.kind != EdgeKind::kGroundMarking) continue;
     EXPECT_NEAR(e.a.z(), g.HeightAt(e.a.head<2>()), 1e-9);
     EXPECT_NEAR(e.b.z(), g.HeightAt(e.b.head<2>()), 1e-9);
+    const Eigen::Vector3d m = 0.5 * (e.a + e.b);
+    EXPECT_NEAR(m.z(), g.HeightAt(m.head<2>()), 0.005);
     ++on_ground;
   }
   EXPECT_GT(on_ground, 100);
+}
+
+TEST(Scene, OnASlopeEverythingStandsOnTheGround) {
+  ExpectEverythingOnTheGround(Eigen::Vector2d(0.07, -0.04), 0);
+}
+
+// Hills 35-90 m wide spanning up to 12 m: the ground under the town varies
+// by several metres, across one building by up to a metre.
+TEST(Scene, OverHillsEverythingStandsOnTheGround) {
+  ExpectEverythingOnTheGround(Eigen::Vector2d::Zero(), 12);
+  SceneOptions o;
+  o.extent_x = o.extent_y = 140;
+  o.terrain_relief_m = 12;
+  const GroundLayout g = GenerateScene(o, 6).ground;
+  double lo = 1e300, hi = -1e300;
+  for (double x = -70; x <= 70; x += 5)
+    for (double y = -70; y <= 70; y += 5) {
+      const Eigen::Vector2d p(x, y);
+      lo = std::min(lo, g.HeightAt(p)), hi = std::max(hi, g.HeightAt(p));
+      // The analytic gradient is the one the renderer shades and traces by.
+      const double h = 1e-4;
+      const Eigen::Vector2d num(
+          (g.HeightAt(p + Eigen::Vector2d(h, 0)) - g.HeightAt(p - Eigen::Vector2d(h, 0))) / (2 * h),
+          (g.HeightAt(p + Eigen::Vector2d(0, h)) - g.HeightAt(p - Eigen::Vector2d(0, h))) /
+              (2 * h));
+      EXPECT_NEAR((g.GradientAt(p) - num).norm(), 0, 1e-6);
+    }
+  EXPECT_GT(hi - lo, 3.0);
+  EXPECT_LT(hi - lo, 12.0 * 6);
 }
 
 }  // namespace

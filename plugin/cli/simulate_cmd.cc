@@ -49,10 +49,14 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
               "height")
       .Option("-terrain_aspect", &r.terrain_aspect_deg, "DEG",
               "direction the ground falls towards, clockwise from north (0)")
+      .Option("-terrain_relief", &r.terrain_relief_m, "M",
+              "smooth hills and hollows 35-90 m wide on the ground, their heights spanning up "
+              "to this (0: none); the block gets a DTM (dtm.tif)")
       .Flag("-overwrite", &r.overwrite, "replace an existing output folder")
       .Example("roofsweep simulate -preset realistic -seed 7 -o out/block")
       .Example(
           "roofsweep simulate -preset realistic -terrain_slope 8 -terrain_aspect 120 -o out/hill")
+      .Example("roofsweep simulate -preset realistic -terrain_relief 12 -o out/hills")
       .Example("roofsweep simulate -citygml 3910_5819.gml -o out/berlin");
   if (!p.Parse(args)) return 0;
   if (r.output_dir.empty()) throw UsageError("Missing option -o DIR", p.Synopsis());

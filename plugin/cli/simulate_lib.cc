@@ -159,6 +159,13 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
     // The ground falls towards the aspect, so it rises the other way.
     o.scene.ground_slope = -s * Eigen::Vector2d(std::sin(a), std::cos(a));
   }
+  if (!std::isfinite(r.terrain_relief_m) || r.terrain_relief_m < 0 || r.terrain_relief_m > 50)
+    throw Error("simulate: the terrain relief must be 0..50 m");
+  if (r.terrain_relief_m > 0) {
+    if (!r.citygml.empty())
+      throw Error("simulate: a terrain relief needs a generated town, not -citygml");
+    o.scene.terrain_relief_m = r.terrain_relief_m;
+  }
   std::string ext = r.image_format.empty() ? (r.preset == "easy" ? "png" : "jpg") : r.image_format;
   if (ext == "jpeg") ext = "jpg";
   if (ext != "jpg" && ext != "tif" && ext != "png") {
@@ -245,7 +252,7 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   io.crs = crs;
   io.camera_file = dir + "/orientation/camera.yaml";
   io.image_dir = dir + "/images";
-  if (sim.scene.ground.slope.isZero()) {
+  if (sim.scene.ground.slope.isZero() && sim.scene.ground.Planar()) {
     io.ground_height = frame.ToCrs(Eigen::Vector3d(0, 0, sim.scene.ground.z)).z();
   } else {
     WriteTerrainDtm(sim, frame, crs, dir + "/dtm.tif");
@@ -312,7 +319,8 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
       {"image_format", ext},
       {"jpeg_quality", ext == "jpg" ? r.jpeg_quality : 0},
       {"terrain_slope_percent", r.terrain_slope_percent},
-      {"terrain_aspect_deg", r.terrain_aspect_deg}};
+      {"terrain_aspect_deg", r.terrain_aspect_deg},
+      {"terrain_relief_m", r.terrain_relief_m}};
   WriteText(dir + "/simulation.json", meta.dump(2) + "\n");
   tmp.CommitTo(r.output_dir);
   ReportOrCancel(progress, 1.0);

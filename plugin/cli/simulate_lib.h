@@ -38,6 +38,9 @@ struct SimulateRequest {
   // Not 0: the block gets a DTM (dtm.tif) instead of one ground height.
   double terrain_slope_percent = 0;
   double terrain_aspect_deg = 0;
+  // Hills and hollows on that plane spanning up to this many metres
+  // (sim::SceneOptions::terrain_relief_m); not 0: a DTM too.
+  double terrain_relief_m = 0;
 };
 
 struct SimulateSummary {

@@ -133,6 +133,8 @@ test_bad_input() {
   expect_fail missing_citygml "$WORK/y" "nope.gml" -- simulate -citygml "$WORK/nope.gml" -o "$WORK/y"
   expect_fail steep_slope "$WORK/s" "terrain slope must be 0..50 %" -- simulate -preset easy -terrain_slope 80 -o "$WORK/s"
   expect_fail slope_on_citygml "$WORK/c" "needs a generated town" -- simulate -citygml "$WORK/nope.gml" -terrain_slope 5 -o "$WORK/c"
+  expect_fail negative_relief "$WORK/r" "terrain relief must be 0..50 m" -- simulate -preset easy -terrain_relief -3 -o "$WORK/r"
+  expect_fail relief_on_citygml "$WORK/c" "needs a generated town" -- simulate -citygml "$WORK/nope.gml" -terrain_relief 5 -o "$WORK/c"
   small_block || return
   expect_fail existing_folder "" "exists" -- simulate -preset easy -o "$SIM"
   expect_fail eval_missing_truth "" "nothere" -- eval "$SIM/groundtruth.gml" "$WORK/nothere.gml"
