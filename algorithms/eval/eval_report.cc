@@ -51,6 +51,16 @@ std::vector<std::pair<std::pair<int, int>, int>> RoofTypeMistakes(const Building
   return out;
 }
 
+// {"on_outline": {"count": n, "sum_squares_m2": s}, "inside": ..., ...}
+nlohmann::json VertexPlacesJson(const GeometryScores& g) {
+  static const char* const kKeys[kVertexPlaces] = {"on_outline", "inside", "over_another_roof",
+                                                   "over_no_roof"};
+  nlohmann::json j = nlohmann::json::object();
+  for (int k = 0; k < kVertexPlaces; ++k)
+    j[kKeys[k]] = {{"count", g.vertex_place_count[k]}, {"sum_squares_m2", g.vertex_place_sum2[k]}};
+  return j;
+}
+
 nlohmann::json InputJson(const InputCounts& c) {
   return {{"roof_polygons", c.roof_polygons},
           {"vertical_roof_polygons", c.vertical},
@@ -89,6 +99,21 @@ std::string FormatTable(const EvalResult& r) {
   if (r.options.gsd_m > 0) t.Row("vertex RMS XY", Fmt(g.vertex_rms_gsd, "%.2f GSD"));
   t.Row("vertex distance median", Fmt(g.vertex_median_m, "%.3f m"), "all vertices");
   if (r.options.gsd_m > 0) t.Row("vertices within 2 GSD", Pct(g.vertex_within_2gsd));
+  // Where the rest lie: the share of the vertices and of the RMS's sum of
+  // squares, by place (VertexPlace).
+  {
+    int n = 0;
+    double sum2 = 0;
+    for (int k = 0; k < kVertexPlaces; ++k)
+      n += g.vertex_place_count[k], sum2 += g.vertex_place_sum2[k];
+    for (int k = 0; k < kVertexPlaces && n > 0; ++k)
+      t.Row(std::string("  ") + VertexPlaceName(static_cast<VertexPlace>(k)),
+            Fmt(100.0 * g.vertex_place_count[k] / n, "%.1f %%"),
+            std::to_string(g.vertex_place_count[k]) + " vertices" +
+                (sum2 > 0 ? ", " + Fmt(100.0 * g.vertex_place_sum2[k] / sum2, "%.1f %%") +
+                                " of the squares"
+                          : ""));
+  }
   t.Row("RMSZ", Fmt(g.rmsz_m, "%.3f m"),
         std::to_string(g.rmsz_cells) + " cells of " + Fmt(r.options.rmsz_grid_m, "%.2f m"));
   t.Row("mean dZ (result - ref)", Fmt(g.dz_mean_m, "%+.3f m"));
@@ -163,6 +188,7 @@ nlohmann::json ToJson(const EvalResult& r) {
                    {"vertex_median_m", Num(g.vertex_median_m)},
                    {"vertex_within_2gsd", Num(g.vertex_within_2gsd)},
                    {"vertices", g.vertices},
+                   {"vertex_places", VertexPlacesJson(g)},
                    {"vertex_outliers", g.vertex_outliers},
                    {"rmsz_m", Num(g.rmsz_m)},
                    {"dz_mean_m", Num(g.dz_mean_m)},

@@ -156,6 +156,8 @@ void CheckOptions(const EvalOptions& o) {
     throw Error("evaluation option large_plane_m2 must be >= 0");
   if (!(o.vertex_max_distance_m > 0))
     throw Error("evaluation option vertex_max_distance_m must be positive");
+  if (!(o.vertex_on_outline_m >= 0))
+    throw Error("evaluation option vertex_on_outline_m must be >= 0");
   if (!(o.planes.vertical_roof_deg > 0 && o.planes.vertical_roof_deg <= 90))
     throw Error("evaluation option vertical_roof_deg must be in (0, 90]");
 }
@@ -215,25 +217,57 @@ void ScoreSegmentation(const std::vector<Region>& res, const std::vector<Region>
   for (const auto& [root, c] : cluster) s->n_n_to_m += c.first > 1 && c.second > 1;
 }
 
+// A point of the plane the result's roof polygons of `p` lie in.
+Eigen::Vector3d PointOn(const eval::RoofPlane& p, const CityModel& model) {
+  const auto [s, k] = p.polygons.front();
+  return model.buildings[p.building].surfaces[s].polygons[k].exterior.front();
+}
+
+// Where v lies against reference plane t (see VertexPlace); d its distance
+// to t's outline.
+VertexPlace PlaceOf(const Eigen::Vector2d& v, double d, const eval::RoofPlaneSet& ref, size_t t,
+                    const EvalOptions& o) {
+  const double on = o.gsd_m > 0 ? 2 * o.gsd_m : o.vertex_on_outline_m;
+  if (d <= on) return VertexPlace::kOnOutline;
+  if (eval::Contains(ref.planes[t].plan, v)) return VertexPlace::kInside;
+  for (size_t k = 0; k < ref.planes.size(); ++k) {
+    const eval::Box2& b = ref.planes[k].box;
+    if (k == t || v.x() < b.min.x() || v.x() > b.max.x() || v.y() < b.min.y() || v.y() > b.max.y())
+      continue;
+    if (eval::Contains(ref.planes[k].plan, v)) return VertexPlace::kOverAnotherRoof;
+  }
+  return VertexPlace::kOverNoRoof;
+}
+
 void ScoreGeometry(const eval::RoofPlaneSet& res, const eval::RoofPlaneSet& ref,
-                   const SideMatch& ref_match, const std::vector<Region>& res_regions,
-                   const std::vector<Region>& ref_regions, const EvalOptions& o,
-                   GeometryScores* g) {
+                   const CityModel& result, const SideMatch& ref_match,
+                   const std::vector<Region>& res_regions, const std::vector<Region>& ref_regions,
+                   const EvalOptions& o, GeometryScores* g, std::vector<VertexRecord>* records) {
   std::vector<double> angles, dist;
   double v2 = 0;
   for (size_t t = 0; t < ref.planes.size(); ++t) {
     const int r = ref_match.best[t];
     if (r < 0) continue;
     angles.push_back(AngleDeg(res_regions[r].normal, ref_regions[t].normal));
+    const Eigen::Vector3d n = res.planes[r].normal, x0 = PointOn(res.planes[r], result);
     ForEachRing(res.planes[r].outline, [&](const eval::Ring2& ring) {
       for (const auto& v : ring) {
         const double d = DistanceToOutline(v, ref.planes[t].outline);
+        const VertexPlace place = PlaceOf(v, d, ref, t, o);
+        const int k = static_cast<int>(place);
+        ++g->vertex_place_count[k];
         dist.push_back(d);
         if (d > o.vertex_max_distance_m) {
           ++g->vertex_outliers;
         } else {
           ++g->vertices;
           v2 += d * d;
+          g->vertex_place_sum2[k] += d * d;
+        }
+        if (records) {
+          // Roof planes are not vertical (RoofPlaneOptions::vertical_roof_deg).
+          const double z = x0.z() - (n.x() * (v.x() - x0.x()) + n.y() * (v.y() - x0.y())) / n.z();
+          records->push_back({{v.x(), v.y(), z}, r, static_cast<int>(t), d, place});
         }
       }
     });
@@ -333,6 +367,20 @@ void ScoreBuildings(const CityModel& result, const CityModel& truth, const EvalO
 
 }  // namespace
 
+const char* VertexPlaceName(VertexPlace place) {
+  switch (place) {
+    case VertexPlace::kOnOutline:
+      return "on the outline";
+    case VertexPlace::kInside:
+      return "inside, face cut short";
+    case VertexPlace::kOverAnotherRoof:
+      return "past it, over another roof";
+    case VertexPlace::kOverNoRoof:
+      return "past it, over no roof";
+  }
+  return "?";
+}
+
 EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
                     const std::vector<Segment3>* lines,
                     const std::vector<Segment3>* extra_reference_segments) {
@@ -382,7 +430,8 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
   s.completeness_large = Ratio(s.tp_reference_large, s.n_reference_large);
   s.correctness_large = Ratio(s.tp_result_large, s.n_result_large);
 
-  ScoreGeometry(res, ref, mt, rr, rt, options, &out.geometry);
+  ScoreGeometry(res, ref, result, mt, rr, rt, options, &out.geometry,
+                options.keep_vertices ? &out.vertices : nullptr);
   ScoreHeights(result, truth, options, &out.geometry);
   ScoreBuildings(result, truth, options, &out);
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -58,6 +59,15 @@
 
 namespace roofsweep {
 
+// Where a vertex of a matched result plane lies against its reference
+// plane: on its outline (within 2 GSD, or vertex_on_outline_m without a
+// GSD), inside it (the face was cut short), or past it over another
+// reference roof (a missed neighbour's place, or a terraced neighbour) or
+// over no roof at all (past an eave).
+enum class VertexPlace { kOnOutline = 0, kInside, kOverAnotherRoof, kOverNoRoof };
+constexpr int kVertexPlaces = 4;
+const char* VertexPlaceName(VertexPlace place);
+
 struct EvalOptions {
   eval::RoofPlaneOptions planes;               // what a roof plane is
   double plane_overlap_fraction = 0.5;         // ISPRS: at least 50 % of the plane's own area
@@ -65,6 +75,8 @@ struct EvalOptions {
   double segmentation_overlap_fraction = 0.5;  // of the smaller plane, for N:M links
   double vertex_max_distance_m = 3.0;          // outlier cut for the vertex RMS
   double gsd_m = 0;                            // > 0: also report vertex RMS in GSD
+  double vertex_on_outline_m = 0.10;           // VertexPlace::kOnOutline without a GSD
+  bool keep_vertices = false;                  // fill EvalResult::vertices
   double rmsz_grid_m = 0.25;                   // RMSZ sampling grid
   double building_overlap_fraction = 0.5;      // footprints, of the building's own area
   // Completeness and correctness are also given over the planes of at
@@ -107,6 +119,11 @@ struct GeometryScores {
   // which of them count; the median and the share within 2 GSD (over all
   // vertices, outliers included) show how the rest lie.
   std::optional<double> vertex_median_m, vertex_within_2gsd;
+  // Per VertexPlace, over the same vertices as the median: how many, and
+  // their share of the sum of squared distances within
+  // vertex_max_distance_m (what makes the RMS).
+  std::array<int, kVertexPlaces> vertex_place_count{};
+  std::array<double, kVertexPlaces> vertex_place_sum2{};
   long long rmsz_cells = 0;  // grid cells both models cover
   long long rmsz_cells_result_only = 0, rmsz_cells_reference_only = 0;
   std::optional<double> rmsz_m, dz_mean_m;
@@ -137,6 +154,14 @@ struct InputCounts {
   int roof_polygons = 0, vertical = 0, degenerate = 0, invalid = 0, downward = 0;
 };
 
+// One vertex of a matched result plane's outline (EvalOptions::keep_vertices).
+struct VertexRecord {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // on the result plane
+  int result_plane = -1, reference_plane = -1;         // in EvalResult's plane lists
+  double distance_m = 0;  // plan distance to the reference plane's outline
+  VertexPlace place = VertexPlace::kOnOutline;
+};
+
 struct EvalResult {
   RoofPlaneScores roof_planes;
   GeometryScores geometry;
@@ -146,7 +171,8 @@ struct EvalResult {
   std::vector<PlaneRecord> result_planes,
       reference_planes;  // per plane, in ExtractRoofPlanes order
   std::vector<int> result_building_matched, reference_building_matched;  // 1: TP
-  EvalOptions options;                                                   // as used
+  std::vector<VertexRecord> vertices;  // with EvalOptions::keep_vertices
+  EvalOptions options;                 // as used
 };
 
 // `lines`: reconstructed 3D segments (optional). `extra_reference_segments`:

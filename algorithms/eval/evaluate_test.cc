@@ -138,6 +138,53 @@ TEST(Evaluate, ShiftedBoxVertexRmsAndRmsz) {
   }
 }
 
+// A result face matched to A runs past it over neighbour B and over open
+// ground, and has a notch cut into A: each vertex is told by where it lies
+// (the tail of the vertex RMS, as `eval` prints it).
+TEST(Evaluate, VerticesAreToldByWhereTheyLie) {
+  CityModel truth;
+  truth.buildings = {eval_test::Box("A", 0, 0, 10, 10, 0, 5),
+                     eval_test::Box("B", 10, 0, 10, 10, 0, 5)};
+  Building face;
+  face.id = "R";
+  Polygon3 roof;
+  for (const auto& [x, y] :
+       std::vector<std::pair<double, double>>{{-1, 1}, {12, 1}, {12, 9}, {5, 5}, {-1, 9}})
+    roof.exterior.push_back(V(x, y, 5));
+  face.surfaces.push_back({SurfaceType::kRoof, "", {roof}});
+  CityModel result;
+  result.buildings = {face};
+  EvalOptions o;
+  o.gsd_m = 0.05;
+  o.keep_vertices = true;
+  const EvalResult r = Evaluate(result, truth, o);
+  ASSERT_EQ(r.geometry.matched_pairs, 1);
+  const auto& n = r.geometry.vertex_place_count;
+  EXPECT_EQ(n[static_cast<int>(VertexPlace::kOnOutline)], 0);
+  EXPECT_EQ(n[static_cast<int>(VertexPlace::kInside)], 1);           // the notch (5, 5)
+  EXPECT_EQ(n[static_cast<int>(VertexPlace::kOverAnotherRoof)], 2);  // x = 12, over B
+  EXPECT_EQ(n[static_cast<int>(VertexPlace::kOverNoRoof)], 2);       // x = -1
+  const auto& s2 = r.geometry.vertex_place_sum2;
+  // 5 m off: counted, but beyond the RMS's 3 m cut, so not in its squares.
+  EXPECT_NEAR(s2[static_cast<int>(VertexPlace::kInside)], 0, 1e-9);
+  EXPECT_NEAR(s2[static_cast<int>(VertexPlace::kOverAnotherRoof)], 2 * 4, 1e-9);
+  EXPECT_NEAR(s2[static_cast<int>(VertexPlace::kOverNoRoof)], 2 * 1, 1e-9);
+  ASSERT_EQ(r.vertices.size(), 5u);
+  for (const VertexRecord& v : r.vertices) {
+    EXPECT_NEAR(v.position.z(), 5, 1e-9);
+    EXPECT_EQ(r.reference_planes[v.reference_plane].building_id, "A");
+    EXPECT_EQ(r.result_planes[v.result_plane].building_id, "R");
+  }
+  // On A's outline (the result is A itself): all on it, none kept unasked.
+  o.keep_vertices = false;
+  const EvalResult same = Evaluate(truth, truth, o);
+  EXPECT_EQ(same.geometry.vertex_place_count[static_cast<int>(VertexPlace::kOnOutline)], 8);
+  EXPECT_TRUE(same.vertices.empty());
+  const nlohmann::json j = ToJson(r);
+  EXPECT_EQ(j["geometry"]["vertex_places"]["over_no_roof"]["count"], 2);
+  EXPECT_NE(FormatTable(r).find("past it, over another roof"), std::string::npos);
+}
+
 TEST(Evaluate, HeightOffsetShowsInRmszOnly) {
   const CityModel m = ThreeHouses();
   const EvalResult r = Evaluate(Shifted(m, V(0, 0, 0.3)), m, {});

@@ -269,4 +269,27 @@ double Distance(const MultiPolygon2& a, const MultiPolygon2& b) {
   return best;
 }
 
+namespace {
+
+bool InsideRing(const Ring2& r, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+        p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
+      in = !in;
+  return in;
+}
+
+}  // namespace
+
+bool Contains(const MultiPolygon2& region, const Eigen::Vector2d& p) {
+  for (const Polygon2& poly : region) {
+    if (poly.outer.size() < 3 || !InsideRing(poly.outer, p)) continue;
+    if (std::none_of(poly.holes.begin(), poly.holes.end(),
+                     [&](const Ring2& h) { return h.size() >= 3 && InsideRing(h, p); }))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace roofsweep::eval

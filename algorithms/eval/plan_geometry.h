@@ -52,6 +52,10 @@ MultiPolygon2 MakeRegion(const std::vector<Polygon2>& polygons, UnionStats* stat
 // touch themselves, so this is not a region to clip with.
 MultiPolygon2 Outline(const MultiPolygon2& region);
 
+// True when p lies inside the region (even-odd per polygon: inside its outer
+// ring and in none of its holes); on a boundary either way.
+bool Contains(const MultiPolygon2& region, const Eigen::Vector2d& p);
+
 double Area(const MultiPolygon2& region);  // of the union, m²
 double IntersectionArea(const MultiPolygon2& a, const MultiPolygon2& b);
 // Smallest distance between the two regions (0 when they touch or overlap).

@@ -702,6 +702,7 @@ void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerD
                                   : geometry == LayerGeometry::kMultiLineStringZ
                                       ? wkbMultiLineString25D
                                   : geometry == LayerGeometry::kMultiPolygonZ ? wkbMultiPolygon25D
+                                  : geometry == LayerGeometry::kPointZ        ? wkbPoint25D
                                                                               : wkbNone;
   // GPKG stores "no CRS" as srs_id 0, the undefined GEOGRAPHIC system,
   // which tools show as lat/lon; 2D layers without a CRS are image or other
@@ -742,6 +743,8 @@ void WriteOneLayer(GDALDataset* ds, const std::string& path, const FeatureLayerD
       auto* ml = new OGRMultiLineString();
       for (const auto& l : lf.lines) ml->addGeometryDirectly(line(l, true));
       f.SetGeometryDirectly(ml);
+    } else if (type == wkbPoint25D) {
+      f.SetGeometryDirectly(new OGRPoint(lf.point.x(), lf.point.y(), lf.point.z()));
     } else if (type == wkbMultiPolygon25D) {
       std::vector<const Polygon3*> polys;
       for (const auto& p : lf.polygons) polys.push_back(&p);

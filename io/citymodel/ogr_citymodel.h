@@ -93,10 +93,18 @@ void CheckOgrCreationOptions(const std::string& path, const std::string& driver,
 // ---- Extra layers (lines3d, half planes, ...) ------------------------------
 
 // kLineString is 2D (x, y of lines[0]; image pixel layers have no z).
-enum class LayerGeometry { kNone, kLineStringZ, kMultiLineStringZ, kMultiPolygonZ, kLineString };
+enum class LayerGeometry {
+  kNone,
+  kLineStringZ,
+  kMultiLineStringZ,
+  kMultiPolygonZ,
+  kLineString,
+  kPointZ
+};
 
 // One feature for WriteFeatureLayer: geometry by kind, attributes by type.
 struct LayerFeature {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // PointZ
   std::vector<std::vector<Eigen::Vector3d>> lines;  // LineStringZ uses lines[0]
   std::vector<Polygon3> polygons;
   std::map<std::string, long long> integers;

@@ -21,6 +21,10 @@ int Eval(const std::vector<std::string>& args, Context&) {
       .Flag("--json|-json", &json, "print one JSON object instead of the table")
       .Option("-lines", &r.lines, "FILE", "3D lines to score (GPKG lines3d layer or segments JSON)")
       .Option("-png", &r.png, "FILE", "write a plan-view overlay (ground truth vs result)")
+      .Option("-vertices", &r.vertices, "FILE",
+              "write the matched roof planes' vertices as a point layer (GPKG, ...): distance "
+              "to the reference outline and where each lies (on it, inside, over another roof, "
+              "over no roof)")
       .Option("-planes", &r.planes, "FILE",
               "roof plane hypotheses of the run (run -planes): tell the missed reference planes "
               "by where they were lost")
@@ -34,11 +38,12 @@ int Eval(const std::vector<std::string>& args, Context&) {
               "also score planes of at least this plan area alone (10, as ISPRS)")
       .Option("-line_tolerance", &r.options.lines.distance_m, "M",
               "distance for a 3D line to count (0.10)")
-      .Flag("-overwrite", &r.overwrite, "replace an existing -png file")
+      .Flag("-overwrite", &r.overwrite, "replace an existing -png or -vertices file")
       .Example("roofsweep eval out/buildings.gml out/block")
       .Example("roofsweep eval buildings.gpkg groundtruth.gml -lines lines3d.gpkg --json");
   if (!p.Parse(args)) return 0;
   RequireNewOutput(p, r.png, r.overwrite);
+  RequireNewOutput(p, r.vertices, r.overwrite);
   const EvalReport rep = RunEval(r);
   if (json) {
     std::cout << rep.json.dump(2) << "\n";

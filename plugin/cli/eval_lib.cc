@@ -10,6 +10,7 @@
 #include "algorithms/eval/eval_report.h"
 #include "algorithms/eval/overlay.h"
 #include "io/citymodel/citymodel_io.h"
+#include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/output_file.h"
 #include "io/citymodel/plane_layer_reader.h"
 #include "io/citymodel/segments_json.h"
@@ -63,6 +64,14 @@ EvalReport RunEval(const EvalRequest& r) {
     }
   }
   if (!r.png.empty()) CheckOutputPath(r.png, r.overwrite);
+  FeatureLayerOptions vertex_layer;
+  vertex_layer.overwrite = r.overwrite;
+  vertex_layer.description =
+      "roofsweep eval: vertices of the matched result roof planes against the reference outlines";
+  if (!r.vertices.empty()) {
+    CheckFeatureLayerOutput(r.vertices, vertex_layer);
+    options.keep_vertices = true;
+  }
 
   CityModel result = ReadCityModel(r.result);
   CityModel truth = ReadCityModel(truth_path);
@@ -145,6 +154,25 @@ EvalReport RunEval(const EvalRequest& r) {
     }
   }
   report.json["inputs"] = {{"result", r.result}, {"truth", truth_path}};
+  if (!r.vertices.empty()) {
+    std::vector<LayerFeature> features;
+    for (const VertexRecord& v : report.result.vertices) {
+      LayerFeature f;
+      f.point = v.position + origin;
+      const PlaneRecord& res = report.result.result_planes[v.result_plane];
+      const PlaneRecord& ref = report.result.reference_planes[v.reference_plane];
+      f.strings["building_id"] = res.building_id;
+      f.strings["reference_building_id"] = ref.building_id;
+      f.integers["result_plane"] = v.result_plane;
+      f.integers["reference_plane"] = v.reference_plane;
+      f.reals["distance_m"] = v.distance_m;
+      if (options.gsd_m > 0) f.reals["distance_gsd"] = v.distance_m / options.gsd_m;
+      f.strings["place"] = VertexPlaceName(v.place);
+      features.push_back(std::move(f));
+    }
+    vertex_layer.crs = truth.crs;
+    WriteFeatureLayer(r.vertices, "vertices", LayerGeometry::kPointZ, features, vertex_layer);
+  }
   if (!r.png.empty()) {
     cv::Mat bgr = RenderOverlay(result, truth, report.result), rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);

@@ -14,6 +14,11 @@ struct EvalRequest {
   std::string truth;
   std::string lines;  // optional 3D lines: GPKG/OGR line layer or segments JSON
   std::string png;    // optional plan-view overlay to write
+  // Optional point layer `vertices` (GPKG or any OGR format) in the models'
+  // CRS: every vertex of the matched result planes with its distance to the
+  // reference outline and its place (VertexPlace), for a GIS to show where
+  // a model's outlines go wrong.
+  std::string vertices;
   // Optional roof plane hypotheses of the run (`run -planes`): the missed
   // reference planes are told by where they were lost.
   std::string planes;

@@ -154,6 +154,7 @@ test_wrong_usage() {
   expect_usage usage_exists_import import "exists.json exists; pass -overwrite" -- import opk "$SIM/orientation/opk.txt" -camera "$SIM/orientation/camera.yaml" -o "$WORK/exists.json"
   expect_usage usage_exists_simulate simulate "exists_dir exists; pass -overwrite" -- simulate -preset easy -o "$WORK/exists_dir"
   expect_usage usage_exists_eval eval "exists.png exists; pass -overwrite" -- eval "$gt" "$SIM" -png "$WORK/exists.png"
+  expect_usage usage_exists_eval_vertices eval "exists.gpkg exists; pass -overwrite" -- eval "$gt" "$SIM" -vertices "$WORK/exists.gpkg"
   [[ ! -s "$WORK/exists.gpkg" && ! -s "$WORK/exists.json" ]] && pass usage_exists_untouched || fail usage_exists_untouched "an existing output was changed"
 }
 

@@ -80,6 +80,24 @@ assert l['precision']==1 and l['roof_edge_completeness']==1, l" "$WORK/stdout.tx
     && pass eval_self_perfect || fail eval_self_perfect "$(head -c 600 "$WORK/stdout.txt")"
 }
 
+# -vertices: one point per vertex of the matched planes, in the models' CRS,
+# as many as the JSON counts; against itself every one lies on the outline.
+test_eval_writes_vertices() {
+  small_block || return
+  expect_ok eval_vertices eval "$SIM/groundtruth.gml" "$SIM" --json -vertices "$WORK/v.gpkg" || return
+  python3 - "$WORK/stdout.txt" "$WORK/v.gpkg" <<'PY' 2>"$WORK/py.txt" && pass eval_vertices_layer \
+    || fail eval_vertices_layer "$(tail -1 "$WORK/py.txt")"
+import json, sqlite3, sys
+places = json.load(open(sys.argv[1]))["geometry"]["vertex_places"]
+db = sqlite3.connect(sys.argv[2])
+rows = db.execute("select place, distance_m, building_id, reference_building_id from vertices").fetchall()
+assert len(rows) == sum(p["count"] for p in places.values()) > 8, (len(rows), places)
+assert all(p == "on the outline" and d < 1e-6 and b == rb for p, d, b, rb in rows), rows[:3]
+srs = db.execute("select srs_id from gpkg_geometry_columns where table_name = 'vertices'").fetchone()[0]
+assert srs > 0, srs
+PY
+}
+
 test_eval_against_empty_model() {
   small_block || return
   cat >"$WORK/empty.city.json" <<'J'

@@ -55,6 +55,15 @@ def test_simulate_on_a_slope_writes_a_dtm(tmp_path):
         assert json.load(f)["terrain_slope_percent"] == 10
 
 
+def test_simulate_over_hills_writes_a_dtm(tmp_path):
+    out = str(tmp_path / "hills")
+    res = processing.run("roofsweep:simulate", dict(TINY, TERRAIN_RELIEF=8, OUTPUT=out), feedback=RecordingFeedback())
+    with open(res["BLOCK"]) as f:
+        assert json.load(f)["ground"] == {"dtm": "dtm.tif"}
+    with open(os.path.join(out, "simulation.json")) as f:
+        assert json.load(f)["terrain_relief_m"] == 8
+
+
 def test_simulate_refuses_to_replace_a_foreign_folder(tmp_path):
     keep = tmp_path / "mine.txt"
     keep.write_text("precious")
@@ -268,6 +277,21 @@ def test_eval_groundtruth_against_itself(tiny_block, tmp_path, roofsweep_exe):
     assert out["BUILDING_COMPLETENESS"] == 1.0 and out["BUILDING_CORRECTNESS"] == 1.0
     assert out["ROOF_COMPLETENESS"] == 1.0 and out["ROOF_CORRECTNESS"] == 1.0
     assert out["RMSZ_M"] == pytest.approx(0.0, abs=1e-6)
+
+
+def test_eval_writes_the_vertices_layer(tiny_block, tmp_path, roofsweep_exe):
+    if not has_command(roofsweep_exe, "eval"):
+        pytest.skip("roofsweep eval is not available in this build ({})".format(roofsweep_exe))
+    res, _ = tiny_block
+    vertices = str(tmp_path / "vertices.gpkg")
+    out = processing.run("roofsweep:eval", {"RESULT": res["GROUNDTRUTH"], "GROUNDTRUTH": res["GROUNDTRUTH"],
+                                            "OUTPUT": str(tmp_path / "eval.json"), "VERTICES": vertices},
+                         feedback=RecordingFeedback())
+    assert out["VERTICES"] == vertices
+    layer = QgsVectorLayer(vertices + "|layername=vertices", "v", "ogr")
+    assert layer.isValid() and layer.featureCount() > 8
+    assert {f["place"] for f in layer.getFeatures()} == {"on the outline"}
+    assert _horizontal_epsg(layer.crs()) == ("EPSG", "25832"), layer.crs().toWkt()
 
 
 def test_overlay_of_the_true_model_lies_on_the_image_edges(tiny_block, tmp_path, roofsweep_exe):

@@ -2,8 +2,9 @@
 
 import json
 
-from qgis.core import (QgsProcessingException, QgsProcessingOutputNumber, QgsProcessingParameterFile,
-                       QgsProcessingParameterFileDestination, QgsProcessingParameterNumber)
+from qgis.core import (QgsProcessingException, QgsProcessingOutputMultipleLayers, QgsProcessingOutputNumber,
+                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
+                       QgsProcessingParameterNumber)
 
 from .base import RoofsweepAlgorithm
 
@@ -15,8 +16,10 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
     HELP = ("Scores a LoD2 reconstruction against ground truth like the ISPRS benchmark (roof plane "
             "completeness, correctness and quality, normal-angle, vertex and height errors, buildings, roof "
             "types, optionally 3D lines). The ground truth may be a model or the groundtruth.gml of a "
-            "simulation. Writes the report as JSON.")
-    USES_OPTIONS = ("--json", "-lines", "-png", "-gsd", "-overwrite")
+            "simulation. Writes the report as JSON, and optionally the matched roof planes' vertices as a "
+            "point layer (distance to the reference outline, and whether each lies on it, inside it, over "
+            "another roof or over no roof), which is added to the project.")
+    USES_OPTIONS = ("--json", "-lines", "-png", "-vertices", "-gsd", "-overwrite")
 
     # Output name -> (report section, key): the headline figures.
     FIGURES = {"ROOF_COMPLETENESS": ("roof_planes", "completeness"),
@@ -33,6 +36,8 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
     GSD = "GSD"
     OUTPUT = "OUTPUT"
     PNG = "PNG"
+    VERTICES = "VERTICES"
+    LAYERS = "LAYERS"
 
     def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterFile(self.RESULT, self.tr("Reconstructed model")))
@@ -45,8 +50,12 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterFileDestination(self.PNG, self.tr("Plan-view overlay"),
                                                                 fileFilter="PNG (*.png)", optional=True,
                                                                 createByDefault=False))
+        self.addParameter(QgsProcessingParameterFileDestination(
+            self.VERTICES, self.tr("Vertices against the reference outlines"), fileFilter="GeoPackage (*.gpkg)",
+            optional=True, createByDefault=False))
         for name, (section, key) in self.FIGURES.items():
             self.addOutput(QgsProcessingOutputNumber(name, self.tr("{} {}".format(section, key))))
+        self.addOutput(QgsProcessingOutputMultipleLayers(self.LAYERS, self.tr("Loaded layers")))
 
     def processAlgorithm(self, parameters, context, feedback):
         args = ["-q", "--json",
@@ -58,7 +67,12 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
             args += ["-gsd", repr(self.parameterAsDouble(parameters, self.GSD, context))]
         png = self.parameterAsFileOutput(parameters, self.PNG, context)
         if png:
-            args += ["-png", png, "-overwrite"]
+            args += ["-png", png]
+        vertices = self.parameterAsFileOutput(parameters, self.VERTICES, context)
+        if vertices:
+            args += ["-vertices", vertices]
+        if png or vertices:
+            args.append("-overwrite")
         text = self.run_program(args, feedback, capture_stdout=True)
         try:
             report = json.loads(text)
@@ -75,4 +89,9 @@ class EvaluateAlgorithm(RoofsweepAlgorithm):
                 result[name] = value
         if png:
             result[self.PNG] = png
+        result[self.LAYERS] = []
+        if vertices:
+            result[self.VERTICES] = vertices
+            if vertices.lower().endswith(".gpkg"):
+                result[self.LAYERS] = self.load_gpkg_layers(vertices, ["vertices"], context, self.VERTICES)
         return result

@@ -20,8 +20,8 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
     HELP = ("Renders an oriented aerial block of LoD2 buildings with exactly known cameras and writes images, "
             "orientation, a block manifest (block.json), the ground truth (groundtruth.gml, groundtruth_edges.json) "
             "and the buildings' footprints (footprints.gpkg) into the output "
-            "folder. A terrain slope puts the town on a hillside and gives the block a DTM (dtm.tif) instead of "
-            "one ground height. Unset numbers take the preset's value. An existing output folder is replaced only if it "
+            "folder. A terrain slope puts the town on a hillside, a terrain relief on smooth hills and hollows; "
+            "either gives the block a DTM (dtm.tif) instead of one ground height. Unset numbers take the preset's value. An existing output folder is replaced only if it "
             "is empty or an earlier simulation.")
     USES_OPTIONS = ("-preset", "-seed", "-o", "-overwrite")
 
@@ -39,6 +39,7 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
     OBLIQUES = "OBLIQUES"
     TERRAIN_SLOPE = "TERRAIN_SLOPE"
     TERRAIN_ASPECT = "TERRAIN_ASPECT"
+    TERRAIN_RELIEF = "TERRAIN_RELIEF"
     OUTPUT = "OUTPUT"
     BLOCK = "BLOCK"
     GROUNDTRUTH = "GROUNDTRUTH"
@@ -52,7 +53,9 @@ class SimulateAlgorithm(RoofsweepAlgorithm):
                 (BUILDINGS, "-buildings", "Generated buildings", True, 1),
                 (TERRAIN_SLOPE, "-terrain_slope", "Terrain slope (%)", False, 0),
                 (TERRAIN_ASPECT, "-terrain_aspect", "Direction the terrain falls towards (degrees from north)",
-                 False, -360))
+                 False, -360),
+                (TERRAIN_RELIEF, "-terrain_relief", "Terrain relief: height span of hills and hollows (m)", False,
+                 0))
 
     def initAlgorithm(self, config=None):
         self.addParameter(QgsProcessingParameterEnum(self.PRESET, self.tr("Preset"), options=list(PRESETS),
