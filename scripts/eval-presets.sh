@@ -3,6 +3,8 @@
 # seeds 1 and 2, hard, a Berlin LoD2 tile), runs `roofsweep run` on each,
 # once from matched lines and once from the simulator's true edges (the
 # upper bound of the later stages), and prints one table from `eval -json`.
+# A CASE is PRESET-SEED, berlin-SEED or hills-SEED (realistic over 12 m of
+# relief, with a DTM).
 #   [MATCH_SEEDS="1 2 3"] scripts/eval-presets.sh [BUILD] [OUTDIR] [CASE ...]
 # MATCH_SEEDS (default 1) runs the matched lines once per matching seed
 # (`-seed`, rows matched1, matched2, ...) and ends with the mean and spread
@@ -27,6 +29,8 @@ simulate() {
   if [[ $preset == berlin ]]; then
     "$RS" simulate -preset realistic -seed "$seed" -citygml "$SHARED/data/citygml/berlin-lod2/3910_5819.gml" \
       -aoi 391760,5818980,391900,5819110 -o "$OUT/$name" -q
+  elif [[ $preset == hills ]]; then
+    "$RS" simulate -preset realistic -seed "$seed" -terrain_relief 12 -o "$OUT/$name" -q
   else
     "$RS" simulate -preset "$preset" -seed "$seed" -o "$OUT/$name" -q
   fi
