@@ -8,6 +8,7 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint_completion.h"
+#include "algorithms/buildings/footprint_roofs.h"
 #include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/solid_check.h"
 #include "algorithms/buildings/test_planes.h"
@@ -810,7 +811,7 @@ TEST(FootprintCompletion, BareFootprintsGetAFlatRoofHypothesis) {
   planes.back().patch = ConvexHull({{9, 0}, {13.5, 0}, {13.5, 8}, {9, 8}});
   EXPECT_TRUE(BareFootprints(planes, fps).empty());
 
-  const RoofPlaneHypothesis flat = FlatRoofOver(fps[1], 2.4);
+  const RoofPlaneHypothesis flat = RoofModelFaceAt(fps[1], RoofModelsOver(fps[1]).front(), 0, 2.4);
   EXPECT_EQ(flat.plane, Eigen::Vector4d(0, 0, 1, -2.4));
   EXPECT_TRUE(flat.derived);
   EXPECT_NEAR(std::abs(SignedArea(flat.patch)), 15 - 0.5 * 1.5 * 2, 1e-9);  // the hull

@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "algorithms/buildings/polygon2.h"
-#include "algorithms/core/format.h"
 
 namespace roofsweep {
 namespace {
@@ -114,18 +113,6 @@ std::vector<int> BareFootprints(const std::vector<RoofPlaneHypothesis>& planes,
     if (covered < min_cover * area) bare.push_back(static_cast<int>(f));
   }
   return bare;
-}
-
-RoofPlaneHypothesis FlatRoofOver(const Footprint& footprint, double z) {
-  RoofPlaneHypothesis h;
-  h.plane = Eigen::Vector4d(0, 0, 1, -z);
-  h.patch = ConvexHull(footprint.outline);
-  h.derived = true;
-  const Ring2& r = footprint.outline;
-  for (size_t i = 0; i < r.size(); ++i)
-    h.longest_line_m = std::max(h.longest_line_m, (r[(i + 1) % r.size()] - r[i]).norm());
-  h.id = StrFormat("flat roof over footprint %s", footprint.id.c_str());
-  return h;
 }
 
 }  // namespace roofsweep

@@ -43,11 +43,4 @@ std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
 std::vector<int> BareFootprints(const std::vector<RoofPlaneHypothesis>& planes,
                                 const std::vector<Footprint>& footprints, double min_cover = 0.25);
 
-// A horizontal roof at height z over the footprint (patch: its convex
-// hull), marked derived so that it yields to every plane found directly.
-// It has no supporting 3D line: the footprint's outline stands for them
-// (longest_line_m is its longest edge), as the cadastre says a building
-// stands there.
-RoofPlaneHypothesis FlatRoofOver(const Footprint& footprint, double z);
-
 }  // namespace roofsweep

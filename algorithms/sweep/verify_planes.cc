@@ -494,46 +494,69 @@ std::string OffLineRefusal(const Block& block, const std::vector<cv::Mat>& grey,
 
 }  // namespace
 
-std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<cv::Mat>& images,
-                                          const std::vector<HeightSearch>& searches,
+std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<cv::Mat>& images,
+                                          const std::vector<ModelHeightSearch>& searches,
                                           const VerifyOptions& o, int max_steps) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> out(searches.size(), nan);
+  std::vector<ModelHeight> out(searches.size());
   if (searches.empty() || !(o.spacing_m > 0) || max_steps < 1) return out;
   const std::vector<cv::Mat> grey = GreyImages(images);
   tbb::parallel_for(size_t{0}, searches.size(), [&](size_t i) {
-    const HeightSearch& h = searches[i];
-    if (h.patch.size() < 3 || !(h.z_hi > h.z_lo)) return;
-    const std::vector<Eigen::Vector3d> samples = PatchSamples(h.patch, o).points;
+    const ModelHeightSearch& m = searches[i];
+    if (m.patches.empty() || m.patches.size() != m.planes.size() || !(m.h_hi > m.h_lo)) return;
+    std::vector<std::vector<Eigen::Vector3d>> samples;
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
-    for (const auto& q : h.patch) c += q;
-    c /= static_cast<double>(h.patch.size());
-    const double k =
-        ParallaxPerMetre(RelativeParallax(block, {c.x(), c.y(), 0.5 * (h.z_lo + h.z_hi)}));
+    size_t corners = 0;
+    for (const Ring2& patch : m.patches) {
+      if (patch.size() < 3) return;
+      samples.push_back(PatchSamples(patch, o).points);
+      for (const auto& q : patch) c += q, ++corners;
+    }
+    c /= static_cast<double>(corners);
+    const double z_mid = PlaneZ(m.planes[0], c.x(), c.y()) + 0.5 * (m.h_lo + m.h_hi);
+    const double k = ParallaxPerMetre(RelativeParallax(block, {c.x(), c.y(), z_mid}));
     if (!(k > 0)) return;
     // The coarse pass needs only the profile's peak: a quarter of the
     // samples find it as well at a quarter of the cost.
     VerifyOptions coarse_o = o;
     coarse_o.max_samples = std::max(o.min_samples, o.max_samples / 4);
-    auto score = [&](double z, const VerifyOptions& so) {
-      const Scores s = ScorePlane(block, grey, samples, Eigen::Vector4d(0, 0, 1, -z), so);
-      return s.n >= o.min_samples ? s.sum / s.n : -1.0;
+    auto score = [&](double h, const VerifyOptions& so) {
+      double sum = 0;
+      int n = 0;
+      for (size_t f = 0; f < m.planes.size(); ++f) {
+        Eigen::Vector4d pl = m.planes[f];
+        pl[3] -= pl[2] * h;
+        const Scores s = ScorePlane(block, grey, samples[f], pl, so);
+        sum += s.sum, n += s.n;
+      }
+      return n >= o.min_samples ? sum / n : -1.0;
     };
-    const double step = std::max(2.0 / k, (h.z_hi - h.z_lo) / max_steps);
-    double best_z = nan, best = -1;
-    for (double z = h.z_lo; z <= h.z_hi + 1e-9; z += step) {
-      const double v = score(z, coarse_o);
-      if (v > best) best = v, best_z = z;
+    const double step = std::max(2.0 / k, (m.h_hi - m.h_lo) / max_steps);
+    double best_h = std::numeric_limits<double>::quiet_NaN(), best = -1;
+    for (double h = m.h_lo; h <= m.h_hi + 1e-9; h += step) {
+      const double v = score(h, coarse_o);
+      if (v > best) best = v, best_h = h;
     }
     if (!(best > 0)) return;
-    const double centre = best_z;
+    const double centre = best_h;
     best = -1;
-    for (double z = centre - step; z <= centre + step + 1e-9; z += 0.5 / k) {
-      const double v = score(z, o);
-      if (v > best) best = v, best_z = z;
+    for (double h = centre - step; h <= centre + step + 1e-9; h += 0.5 / k) {
+      const double v = score(h, o);
+      if (v > best) best = v, best_h = h;
     }
-    out[i] = best_z;
+    out[i] = {best_h, best};
   });
+  return out;
+}
+
+std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<cv::Mat>& images,
+                                          const std::vector<HeightSearch>& searches,
+                                          const VerifyOptions& o, int max_steps) {
+  std::vector<ModelHeightSearch> models;
+  for (const HeightSearch& h : searches)
+    models.push_back({{h.patch}, {Eigen::Vector4d(0, 0, 1, 0)}, h.z_lo, h.z_hi});
+  std::vector<double> out;
+  for (const ModelHeight& m : BestModelHeights(block, images, models, o, max_steps))
+    out.push_back(m.h);
   return out;
 }
 

@@ -184,6 +184,28 @@ struct HeightSearch {
   double z_lo = 0, z_hi = 0;
 };
 
+// A search for the height of a roof model (RoofModelsOver): every face's
+// plane moved up by the same h, between h_lo and h_hi.
+struct ModelHeightSearch {
+  std::vector<Ring2> patches;           // convex, counter-clockwise
+  std::vector<Eigen::Vector4d> planes;  // at h = 0, one per patch
+  double h_lo = 0, h_hi = 0;
+};
+
+struct ModelHeight {
+  double h = std::numeric_limits<double>::quiet_NaN();      // NaN: none could be scored
+  double score = std::numeric_limits<double>::quiet_NaN();  // mean Cor+ over all faces' samples
+};
+
+// Per search, the h at which the views agree best on the model: the mean
+// Cor+ over the samples of all its faces (each on its own plane), found as
+// BestHorizontalHeights finds a height. The scores of several models over
+// one footprint compare: their samples lie on one plan grid. Parallel over
+// the searches, deterministic.
+std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<cv::Mat>& images,
+                                          const std::vector<ModelHeightSearch>& searches,
+                                          const VerifyOptions& options, int max_steps = 400);
+
 // Per search, the height (local z) of the horizontal plane the views agree
 // on best: mean Cor+ as in VerifyPlanes, tried in steps of about two pixels
 // of parallax (at most max_steps of them), then refined to about half a

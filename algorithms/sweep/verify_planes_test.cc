@@ -277,6 +277,38 @@ TEST(BestHorizontalHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
   EXPECT_TRUE(v[0].accepted) << v[0].reason;
 }
 
+// A shed roof, 8 x 6 m in plan, rising at 15° from its eaves at z = 4 (y =
+// 0): the shed model finds the eaves' height and fits the images better
+// than the flat roof at its best height, which the footprint models rely on
+// when they choose.
+TEST(BestModelHeights, FindsAShedsEavesAndFitsBetterThanFlat) {
+  const double k = std::tan(15 * M_PI / 180);
+  TestScene scene;
+  Quad roof;
+  roof.origin = {-4, 0, 4};
+  roof.u = {8, 0, 0};
+  roof.v = {0, 6, 6 * k};
+  roof.seed = 11;
+  scene.quads = {roof};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  const Ring2 patch = {{-3.5, 0.5}, {3.5, 0.5}, {3.5, 5.5}, {-3.5, 5.5}};
+  ModelHeightSearch shed, flat;
+  shed.patches = flat.patches = {patch};
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -k, 1).normalized();
+  shed.planes = {Eigen::Vector4d(n.x(), n.y(), n.z(), 0)};  // z = k y at h = 0
+  flat.planes = {Eigen::Vector4d(0, 0, 1, 0)};
+  shed.h_lo = flat.h_lo = 1.5;
+  shed.h_hi = flat.h_hi = 20;
+  const std::vector<ModelHeight> m = BestModelHeights(block, images, {shed, flat}, VerifyOptions());
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_NEAR(m[0].h, 4, 0.15);
+  // The flat roof's best height lies within the shed's height range.
+  EXPECT_GT(m[1].h, 4 - 0.2);
+  EXPECT_LT(m[1].h, 4 + 6 * k + 0.2);
+  EXPECT_GT(m[0].score, m[1].score + 0.1) << m[0].score << " " << m[1].score;
+}
+
 // Two flat roofs, a house at z = 6 up to y = 0 and a shed at z = 4 from
 // y = 1.2, with 1.2 m of ground between them. The plane through the
 // house's eave and the shed's edge is no roof: its windows on the two

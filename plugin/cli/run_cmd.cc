@@ -33,7 +33,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
-       no_lift = false;
+       no_lift = false, flat_only = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -99,6 +99,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-no_footprint_growth", &no_growth,
             "with footprints, do not grow a sloped face seen over part of its footprint along "
             "its contour lines by the strips of the footprint the images confirm")
+      .Flag("-flat_bare_footprints", &flat_only,
+            "with footprints, propose only flat roofs over footprints no plane covers (not the "
+            "shed and gable models)")
       .Option("-min_edge_support", &r.min_edge_support, "F",
               "drop buildings with less than this share of their visible roof-edge length on an "
               "image edge (attribute edge_support; default 0: keep all)")
@@ -125,6 +128,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.mirror_faces = !no_mirror;
   r.lift_lines = !no_lift;
   r.footprint_growth = !no_growth;
+  r.roof_models_over_footprints = !flat_only;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;
   flags.Apply(p);

@@ -7,6 +7,7 @@
 
 #include "algorithms/buildings/assemble_buildings.h"
 #include "algorithms/buildings/footprint_growth.h"
+#include "algorithms/buildings/footprint_roofs.h"
 #include "algorithms/buildings/mirror_completion.h"
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
@@ -66,6 +67,12 @@ struct RunRequest {
   // With footprints: a footprint no plane covers gets a flat roof at the
   // height the views agree on best, if the verification confirms it.
   bool footprint_flat_roofs = true;
+  // ... and the best of the shed and gable models (RoofModelsOver) where it
+  // fits the images better than the flat roof by roof_model_min_gain (mean
+  // Cor+): a model with more parameters fits noise better.
+  bool roof_models_over_footprints = true;
+  RoofModelOptions roof_models;
+  double roof_model_min_gain = 0.05;
   // With footprints: a sloped face seen over part of its footprint grows
   // along its contour lines by the strips of the footprint beyond its patch
   // that the verification confirms (ExtensionsAlongFootprints).
