@@ -548,18 +548,6 @@ std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<
   return out;
 }
 
-std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<cv::Mat>& images,
-                                          const std::vector<HeightSearch>& searches,
-                                          const VerifyOptions& o, int max_steps) {
-  std::vector<ModelHeightSearch> models;
-  for (const HeightSearch& h : searches)
-    models.push_back({{h.patch}, {Eigen::Vector4d(0, 0, 1, 0)}, h.z_lo, h.z_hi});
-  std::vector<double> out;
-  for (const ModelHeight& m : BestModelHeights(block, images, models, o, max_steps))
-    out.push_back(m.h);
-  return out;
-}
-
 std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vector<cv::Mat>& images,
                                             const std::vector<RoofPlaneHypothesis>& planes,
                                             const VerifyOptions& o, Progress& progress) {

@@ -177,13 +177,6 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                                             const std::vector<RoofPlaneHypothesis>& planes,
                                             const VerifyOptions& options, Progress& progress);
 
-// A search for the horizontal plane over `patch` between z_lo and z_hi
-// (local frame).
-struct HeightSearch {
-  Ring2 patch;  // convex, counter-clockwise
-  double z_lo = 0, z_hi = 0;
-};
-
 // A search for the height of a roof model (RoofModelsOver): every face's
 // plane moved up by the same h, between h_lo and h_hi.
 struct ModelHeightSearch {
@@ -198,22 +191,15 @@ struct ModelHeight {
 };
 
 // Per search, the h at which the views agree best on the model: the mean
-// Cor+ over the samples of all its faces (each on its own plane), found as
-// BestHorizontalHeights finds a height. The scores of several models over
+// Cor+ over the samples of all its faces (each on its own plane), tried in
+// steps of about two pixels of parallax (at most max_steps of them), then
+// refined to about half a pixel around the best. A flat roof is one face on
+// the plane z = 0. The result is a hypothesis only: VerifyPlanes decides on
+// it. The scores of several models over
 // one footprint compare: their samples lie on one plan grid. Parallel over
 // the searches, deterministic.
 std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<cv::Mat>& images,
                                           const std::vector<ModelHeightSearch>& searches,
-                                          const VerifyOptions& options, int max_steps = 400);
-
-// Per search, the height (local z) of the horizontal plane the views agree
-// on best: mean Cor+ as in VerifyPlanes, tried in steps of about two pixels
-// of parallax (at most max_steps of them), then refined to about half a
-// pixel around the best. NaN where no height could be scored. The result
-// is a hypothesis only: VerifyPlanes decides on it. Parallel over the
-// searches, deterministic.
-std::vector<double> BestHorizontalHeights(const Block& block, const std::vector<cv::Mat>& images,
-                                          const std::vector<HeightSearch>& searches,
                                           const VerifyOptions& options, int max_steps = 400);
 
 }  // namespace roofsweep

@@ -244,7 +244,7 @@ TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
   EXPECT_FALSE(w[1].accepted) << w[1].score;
 }
 
-TEST(BestHorizontalHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
+TEST(BestModelHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
   // A flat textured roof, 8 x 6 m, at z = 4.3 over the textured ground.
   TestScene scene;
   Quad roof;
@@ -255,22 +255,24 @@ TEST(BestHorizontalHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
   scene.quads = {roof};
   const Block block = sweep_test::FourViewBlock();
   const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
-  HeightSearch over_roof;
-  over_roof.patch = {{-3.5, 0.5}, {3.5, 0.5}, {3.5, 5.5}, {-3.5, 5.5}};
-  over_roof.z_lo = 1.5;
-  over_roof.z_hi = 20;
-  HeightSearch empty_range = over_roof;
-  empty_range.z_hi = empty_range.z_lo;  // nothing to search
-  const std::vector<double> z =
-      BestHorizontalHeights(block, images, {over_roof, empty_range}, VerifyOptions());
-  ASSERT_EQ(z.size(), 2u);
+  ModelHeightSearch over_roof;
+  over_roof.patches = {{{-3.5, 0.5}, {3.5, 0.5}, {3.5, 5.5}, {-3.5, 5.5}}};
+  over_roof.planes = {Eigen::Vector4d(0, 0, 1, 0)};
+  over_roof.h_lo = 1.5;
+  over_roof.h_hi = 20;
+  ModelHeightSearch empty_range = over_roof;
+  empty_range.h_hi = empty_range.h_lo;  // nothing to search
+  const std::vector<ModelHeight> m =
+      BestModelHeights(block, images, {over_roof, empty_range}, VerifyOptions());
+  ASSERT_EQ(m.size(), 2u);
+  const std::vector<double> z = {m[0].h, m[1].h};
   // Half a pixel of parallax is about 0.1 m here.
   EXPECT_NEAR(z[0], 4.3, 0.15);
   EXPECT_TRUE(std::isnan(z[1]));
   // The height found passes the verification.
   RoofPlaneHypothesis h;
   h.plane = Eigen::Vector4d(0, 0, 1, -z[0]);
-  h.patch = over_roof.patch;
+  h.patch = over_roof.patches[0];
   NullProgress progress;
   const auto v = VerifyPlanes(block, images, {h}, VerifyOptions(), progress);
   ASSERT_EQ(v.size(), 1u);
