@@ -722,75 +722,14 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // verified face by face like any plane.
   if (!footprints.empty() && r.footprint_flat_roofs) {
     t0 = Clock::now();
-    // Every roof model over the footprint (flat, sheds, gables;
-    // RoofModelsOver) at the height the views agree on best. The flat roof's
-    // height is searched over the whole range first; a sloped model's eaves
-    // lie below it by at most the model's rise, which bounds their search
-    // (a tenth of the cost). A sloped model replaces the flat roof only where
-    // it fits the images better by roof_model_min_gain; the best one is
-    // proposed, each face verified on its own.
-    const bool all_models = r.roof_models_over_footprints;
-    const double min_gain = r.roof_model_min_gain;
-    auto search_of = [](const RoofModel& m, double lo, double hi) {
-      ModelHeightSearch h;
-      for (const RoofModelFace& face : m.faces) {
-        h.patches.push_back(face.patch);
-        h.planes.push_back(face.plane);
-      }
-      h.h_lo = lo, h.h_hi = hi;
-      return h;
-    };
-    std::vector<ModelHeightSearch> searches;
-    std::vector<std::pair<int, std::vector<RoofModel>>> which;
-    std::vector<double> ground_z;
-    for (int f : BareFootprints(roof_planes, footprints)) {
-      std::vector<RoofModel> models = RoofModelsOver(footprints[f], r.roof_models);
-      if (models.empty()) continue;
-      Eigen::Vector2d c = Eigen::Vector2d::Zero();
-      for (const auto& q : models[0].faces[0].patch) c += q;
-      c /= static_cast<double>(models[0].faces[0].patch.size());
-      const double g = block.ground.HeightAt(c.x(), c.y());
-      if (!std::isfinite(g)) continue;
-      if (!all_models) models.resize(1);
-      searches.push_back(search_of(models[0], g + r.assembly.footprint_min_height_m,
-                                   g + block.max_building_height));
-      which.emplace_back(f, std::move(models));
-      ground_z.push_back(g);
-    }
-    const std::vector<ModelHeight> z_flat = BestModelHeights(block, images, searches, r.verify);
-    std::vector<ModelHeightSearch> sloped;
-    std::vector<std::pair<size_t, size_t>> sloped_of;  // (footprint entry, model)
-    for (size_t k = 0; k < which.size(); ++k) {
-      if (!std::isfinite(z_flat[k].h)) continue;
-      for (size_t m = 1; m < which[k].second.size(); ++m) {
-        double rise = 0;
-        for (const RoofModelFace& face : which[k].second[m].faces)
-          for (const auto& q : face.patch) rise = std::max(rise, PlaneZ(face.plane, q.x(), q.y()));
-        const double lo =
-            std::max(ground_z[k] + r.assembly.footprint_min_height_m, z_flat[k].h - rise - 1.0);
-        if (!(z_flat[k].h + 0.5 > lo)) continue;
-        sloped.push_back(search_of(which[k].second[m], lo, z_flat[k].h + 0.5));
-        sloped_of.emplace_back(k, m);
-      }
-    }
-    const std::vector<ModelHeight> z_sloped = BestModelHeights(block, images, sloped, r.verify);
-    std::vector<std::pair<size_t, ModelHeight>> best(which.size(), {0, ModelHeight{}});
-    for (size_t k = 0; k < which.size(); ++k) best[k].second = z_flat[k];
-    for (size_t j = 0; j < sloped.size(); ++j) {
-      const size_t k = sloped_of[j].first;
-      auto& [model, height] = best[k];
-      if (std::isfinite(z_sloped[j].score) && z_sloped[j].score >= z_flat[k].score + min_gain &&
-          !(z_sloped[j].score <= height.score))
-        model = sloped_of[j].second, height = z_sloped[j];
-    }
-    std::vector<RoofPlaneHypothesis> roofs;
-    for (size_t k = 0; k < which.size(); ++k) {
-      if (!std::isfinite(best[k].second.h)) continue;
-      const RoofModel& m = which[k].second[best[k].first];
-      for (size_t face = 0; face < m.faces.size(); ++face)
-        roofs.push_back(RoofModelFaceAt(footprints[which[k].first], m, face, best[k].second.h));
-    }
-    const int tried = static_cast<int>(which.size());
+    BareFootprintRoofOptions bo;
+    bo.models = r.roof_models_over_footprints;
+    bo.model = r.roof_models;
+    bo.min_gain = r.roof_model_min_gain;
+    bo.min_height_m = r.assembly.footprint_min_height_m;
+    int tried = 0;
+    std::vector<RoofPlaneHypothesis> roofs =
+        RoofsOverBareFootprints(block, images, roof_planes, footprints, bo, r.verify, &tried);
     const size_t proposed = roofs.size();
     const size_t confirmed = add_verified(std::move(roofs));
     out.stages.push_back(

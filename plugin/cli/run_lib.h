@@ -16,6 +16,7 @@
 #include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
 #include "algorithms/sweep/eave_planes.h"
+#include "algorithms/sweep/footprint_roof_search.h"
 #include "algorithms/sweep/lift_lines.h"
 #include "algorithms/sweep/merge_coplanar_neighbours.h"
 #include "algorithms/sweep/plane_grouping.h"
@@ -67,12 +68,12 @@ struct RunRequest {
   // With footprints: a footprint no plane covers gets a flat roof at the
   // height the views agree on best, if the verification confirms it.
   bool footprint_flat_roofs = true;
-  // ... and the best of the shed and gable models (RoofModelsOver) where it
-  // fits the images better than the flat roof by roof_model_min_gain (mean
-  // Cor+): a model with more parameters fits noise better.
+  // ... or the best of the shed and gable models (RoofsOverBareFootprints)
+  // where it fits the images better than the flat roof by
+  // roof_model_min_gain.
   bool roof_models_over_footprints = true;
   RoofModelOptions roof_models;
-  double roof_model_min_gain = 0.05;
+  double roof_model_min_gain = BareFootprintRoofOptions{}.min_gain;
   // With footprints: a sloped face seen over part of its footprint grows
   // along its contour lines by the strips of the footprint beyond its patch
   // that the verification confirms (ExtensionsAlongFootprints).
