@@ -73,6 +73,14 @@ std::vector<PatchExtension> ExtensionsAlongFootprints(
           if (jb <= p0) lo = std::max(lo, jb);
         }
       }
+      auto propose = [&](Ring2 patch, const std::string& how) {
+        PatchExtension e;
+        e.plane = over[k];
+        e.strip = q;
+        e.strip.patch = std::move(patch);
+        e.strip.id = q.id + how + footprints[f].id;
+        out.push_back(std::move(e));
+      };
       // The strips of the footprint beyond the piece along the band, up to
       // the stops.
       const std::pair<double, double> sides[2] = {{lo, p0}, {p1, hi}};
@@ -80,12 +88,29 @@ std::vector<PatchExtension> ExtensionsAlongFootprints(
         if (!(b > a)) continue;
         Ring2 strip = HullOfIntersection(band(a, b), outline);
         if (strip.empty() || std::abs(SignedArea(strip)) < o.min_strip_m2) continue;
-        PatchExtension e;
-        e.plane = over[k];
-        e.strip = q;
-        e.strip.patch = std::move(strip);
-        e.strip.id = q.id + " grown along footprint " + footprints[f].id;
-        out.push_back(std::move(e));
+        propose(std::move(strip), " grown along footprint ");
+      }
+      if (!o.fill_band) continue;
+      // Within the band: what the face's own rectangle (contour lines by
+      // fall line, in the footprint) holds beyond each edge of the piece.
+      // A convex piece leaves out the rectangle's corners, each beyond one
+      // of its edges (a triangle from an eave and a verge leaves one).
+      const Ring2 rect = HullOfIntersection(band(std::max(p0, lo), std::min(p1, hi)), outline);
+      if (rect.size() < 3) continue;
+      const Ring2& pc = piece[k];
+      for (size_t m = 0; m < pc.size(); ++m) {
+        const Eigen::Vector2d a = pc[m], b = pc[(m + 1) % pc.size()];
+        // Beyond a counter-clockwise edge: to its right, r . (x - a) >= 0.
+        const Eigen::Vector2d r(b.y() - a.y(), a.x() - b.x());
+        Ring2 corner = ClipHalfPlane(rect, -r.x(), -r.y(), r.dot(a));
+        if (corner.size() < 3 || std::abs(SignedArea(corner)) < o.min_strip_m2) continue;
+        // Another face's patch there: the corner is that face's (a hip
+        // end beside a triangular hip face), not this one's.
+        bool taken = false;
+        for (size_t j = 0; j < over.size() && !taken; ++j)
+          taken = j != k && planes[over[j]].plane.head<3>().dot(q.plane.head<3>()) < coplanar &&
+                  IntersectionArea(corner, piece[j]) >= o.stop_min_m2;
+        if (!taken) propose(std::move(corner), " filled within footprint ");
       }
     }
   }

@@ -20,6 +20,15 @@ struct FootprintGrowthOptions {
   // the band; planes within coplanar_angle_deg of the grown one do not.
   double stop_min_m2 = 1.0;
   double coplanar_angle_deg = 5.0;
+  // Also propose the corners of the face's own rectangle in the footprint
+  // (the band by the piece's extent along it) that its patch leaves out,
+  // unless another face's patch lies there: the hull of an eave and a verge
+  // is a triangle, half the face, and a face seen over less than half its
+  // reference is not matched at all. Over 30 paired runs with footprints
+  // (10 blocks x matching seeds 1-3) plane quality rose by 0.41 +- 0.15
+  // (9 runs up, 1 down), completeness by 0.46 +- 0.14 (9 / 0), building
+  // quality by 0.29 +- 0.12 (5 / 0); correctness -0.05 +- 0.07.
+  bool fill_band = true;
 };
 
 // A strip of a footprint proposed as the continuation of planes[plane].
@@ -40,9 +49,10 @@ struct PatchExtension {
 // For each sloped plane and each footprint it covers, the band its patch
 // spans down the fall line is followed along the contour lines to both
 // sides, within the footprint, up to the nearest patch of another
-// (non-coplanar) plane over the footprint that reaches into the band. The
-// two strips beyond the patch are proposals only: the caller verifies
-// each against the images and grows the plane's patch by those confirmed.
+// (non-coplanar) plane over the footprint that reaches into the band; and
+// the corners of that band the patch leaves out (fill_band). These strips
+// are proposals only: the caller verifies each against the images and
+// grows the plane's patch by those confirmed.
 // Deterministic.
 std::vector<PatchExtension> ExtensionsAlongFootprints(
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,

@@ -90,5 +90,53 @@ TEST(ExtensionsAlongFootprints, FlatPlanesAndPlanesOffTheFootprintDoNotGrow) {
       ExtensionsAlongFootprints(planes, {Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})}).empty());
 }
 
+// The north face seen as the hull of its eave (y = 8, x 0-10) and the west
+// end of its ridge: a triangle, half the face. The corner it leaves out is
+// proposed, within the band and the footprint, with the face's plane.
+TEST(ExtensionsAlongFootprints, TheCornerATriangularPatchLeavesOutIsProposed) {
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp(kNorth, {{0, 4.1}, {10, 8}, {0, 8}}, "north"),
+      Hyp(kSouth, {{0, 0}, {10, 0}, {10, 3.9}, {0, 3.9}}, "south")};
+  const Footprint house = Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}});
+  const std::vector<PatchExtension> e = ExtensionsAlongFootprints(planes, {house});
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0].plane, 0);
+  EXPECT_EQ(e[0].strip.plane, kNorth);
+  EXPECT_NE(e[0].strip.id.find("north filled within footprint h"), std::string::npos)
+      << e[0].strip.id;
+  // The triangle (0, 4.1), (10, 4.1), (10, 8): together with the patch the
+  // whole rectangle of the face.
+  EXPECT_NEAR(SignedArea(e[0].strip.patch), 0.5 * 10 * 3.9, 1e-9);
+  const Eigen::Vector4d b = Bounds(e[0].strip.patch);
+  EXPECT_NEAR(b[0], 0, 1e-9);
+  EXPECT_NEAR(b[1], 4.1, 1e-9);
+  EXPECT_NEAR(b[2], 10, 1e-9);
+  EXPECT_NEAR(b[3], 8, 1e-9);
+
+  FootprintGrowthOptions off;
+  off.fill_band = false;
+  EXPECT_TRUE(ExtensionsAlongFootprints(planes, {house}, off).empty());
+}
+
+// A hip end's patch in the corner: the corner is that face's, and nothing
+// is proposed.
+TEST(ExtensionsAlongFootprints, ACornerAnotherFaceHoldsIsNotFilled) {
+  std::vector<RoofPlaneHypothesis> planes = {
+      Hyp(kNorth, {{0, 4.1}, {10, 8}, {0, 8}}, "north"),
+      Hyp(SlopedPlane({8, 6, kRidgeZ}, 45, 0), {{8, 4.5}, {9.8, 4.5}, {9.8, 7}, {8, 7}},
+          "hip end")};
+  const Footprint house = Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}});
+  auto filled = [&] {
+    int n = 0;
+    for (const PatchExtension& x : ExtensionsAlongFootprints(planes, {house}))
+      n += x.strip.id.find("north filled") != std::string::npos;
+    return n;
+  };
+  EXPECT_EQ(filled(), 0);
+  // The same hip end on the south side, outside the corner: it is filled.
+  planes[1].patch = ConvexHull({{8, 0.5}, {9.8, 0.5}, {9.8, 3}, {8, 3}});
+  EXPECT_EQ(filled(), 1);
+}
+
 }  // namespace
 }  // namespace roofsweep

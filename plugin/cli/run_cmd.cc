@@ -98,7 +98,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "those that bound a plane")
       .Flag("-no_footprint_growth", &no_growth,
             "with footprints, do not grow a sloped face seen over part of its footprint along "
-            "its contour lines by the strips of the footprint the images confirm")
+            "its contour lines, nor into the corners of its rectangle that its patch leaves out, "
+            "by the strips of the footprint the images confirm")
       .Flag("-flat_bare_footprints", &flat_only,
             "with footprints, propose only flat roofs over footprints no plane covers (not the "
             "shed and gable models)")
