@@ -115,4 +115,62 @@ std::vector<int> BareFootprints(const std::vector<RoofPlaneHypothesis>& planes,
   return bare;
 }
 
+std::vector<FootprintBeyondRidge> FootprintsBeyondRidges(
+    const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
+    const BeyondRidgeOptions& o) {
+  const double min_gradient = std::sin(o.min_slope_deg * M_PI / 180);
+  const double same = std::cos(o.same_angle_deg * M_PI / 180);
+  std::vector<Eigen::Vector4d> pb(planes.size());
+  for (size_t i = 0; i < planes.size(); ++i) pb[i] = RingBounds(planes[i].patch);
+  std::vector<FootprintBeyondRidge> out;
+  for (size_t f = 0; f < footprints.size(); ++f) {
+    const Ring2& outline = footprints[f].outline;
+    const double area = std::abs(SignedArea(outline));
+    if (!(area > 0)) continue;
+    const Eigen::Vector4d b = RingBounds(outline);
+    int face = -1;
+    bool one = true;
+    std::vector<Ring2> pieces;
+    for (size_t i = 0; i < planes.size() && one; ++i) {
+      if (!BoundsMeet(pb[i], b)) continue;
+      const std::vector<Ring2> in = IntersectPolygons(planes[i].patch, outline);
+      double a = 0;
+      for (const Ring2& r : in) a += std::abs(SignedArea(r));
+      if (a < std::max(2.0, o.min_face_fraction * area)) continue;
+      if (face < 0) face = static_cast<int>(i);
+      one = planes[i].plane.head<3>().dot(planes[face].plane.head<3>()) >= same;
+      pieces.insert(pieces.end(), in.begin(), in.end());
+    }
+    if (face < 0 || !one) continue;
+    // n = (a, b, c), c > 0: the face rises against (a, b).
+    const Eigen::Vector2d g = planes[face].plane.head<2>();
+    if (g.norm() < min_gradient) continue;
+    const Eigen::Vector2d up = -g.normalized(), along(-up.y(), up.x());
+    double top = -std::numeric_limits<double>::infinity(), reach = 0;
+    for (const Ring2& r : pieces)
+      for (const auto& v : r) top = std::max(top, up.dot(v));
+    for (const auto& v : outline) reach = std::max(reach, (v - outline[0]).norm());
+    // A box from the top line uphill past the footprint, clipped to it.
+    const Eigen::Vector2d o0 = top * up + along.dot(outline[0]) * along;
+    const Eigen::Vector2d w = 2 * reach * along, h = 2 * reach * up;
+    const std::vector<Ring2> parts =
+        IntersectPolygons({o0 - w, o0 + w, o0 + w + h, o0 - w + h}, outline);
+    const auto largest =
+        std::max_element(parts.begin(), parts.end(), [](const Ring2& x, const Ring2& y) {
+          return std::abs(SignedArea(x)) < std::abs(SignedArea(y));
+        });
+    if (largest == parts.end()) continue;
+    const double a = std::abs(SignedArea(*largest));
+    if (a < o.min_fraction * area || a < o.min_area_m2) continue;
+    FootprintBeyondRidge r;
+    r.part.id = footprints[f].id + " beyond " + planes[face].id;
+    r.part.outline = *largest;
+    r.footprint = static_cast<int>(f);
+    r.plane = face;
+    r.face_slope_deg = std::acos(std::min(1.0, std::abs(planes[face].plane[2]))) * 180 / M_PI;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
 }  // namespace roofsweep

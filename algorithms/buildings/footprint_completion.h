@@ -43,4 +43,35 @@ std::vector<RoofPlaneHypothesis> PlanesFromNeighbourFootprints(
 std::vector<int> BareFootprints(const std::vector<RoofPlaneHypothesis>& planes,
                                 const std::vector<Footprint>& footprints, double min_cover = 0.25);
 
+// Options of FootprintsBeyondRidges.
+struct BeyondRidgeOptions {
+  // The face must slope at least this much (a flat roof has no ridge).
+  double min_slope_deg = 10.0;
+  // The footprint holds one face: every plane covering at least
+  // min_face_fraction of it (and 2 m²) lies within same_angle_deg of the
+  // first; smaller ones (dormers, chimneys, slivers) do not count.
+  double same_angle_deg = 5.0;
+  double min_face_fraction = 0.1;
+  // The part beyond the face's top covers at least this much of the
+  // footprint and min_area_m2.
+  double min_fraction = 0.25;
+  double min_area_m2 = 5.0;
+};
+
+// The part of a footprint beyond the top of the one sloped face found over
+// it: the other side of a gable, a shed against a higher wing.
+struct FootprintBeyondRidge {
+  Footprint part;      // id "<footprint id> beyond <plane id>"
+  int footprint = -1;  // index into the footprints
+  int plane = -1;      // the face, index into the planes
+  double face_slope_deg = 0;
+};
+
+// For every footprint over which the planes hold one sloped face (see
+// BeyondRidgeOptions), the largest piece of the footprint uphill of the
+// highest point of that face's patches over it. Deterministic.
+std::vector<FootprintBeyondRidge> FootprintsBeyondRidges(
+    const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
+    const BeyondRidgeOptions& options = {});
+
 }  // namespace roofsweep

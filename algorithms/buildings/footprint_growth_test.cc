@@ -11,21 +11,6 @@
 namespace roofsweep {
 namespace {
 
-RoofPlaneHypothesis Hyp(const Eigen::Vector4d& plane, Ring2 patch, const std::string& id) {
-  RoofPlaneHypothesis h;
-  h.plane = plane;
-  h.patch = ConvexHull(std::move(patch));
-  h.id = id;
-  return h;
-}
-
-Footprint Fp(const std::string& id, Ring2 outline) {
-  Footprint f;
-  f.id = id;
-  f.outline = std::move(outline);
-  return f;
-}
-
 Eigen::Vector4d Bounds(const Ring2& r) {
   Eigen::Vector4d b(1e9, 1e9, -1e9, -1e9);
   for (const auto& v : r)
@@ -40,10 +25,10 @@ const Eigen::Vector4d kNorth = SlopedPlane({0, 4, kRidgeZ}, 30, 90);
 
 TEST(ExtensionsAlongFootprints, AFaceSeenOverPartOfItsFootprintRunsOnToItsEnds) {
   const std::vector<RoofPlaneHypothesis> planes = {
-      Hyp(kSouth, {{3, 0.2}, {7, 0.2}, {7, 3.9}, {3, 3.9}}, "south"),
-      Hyp(kNorth, {{0, 4.1}, {10, 4.1}, {10, 8}, {0, 8}}, "north")};
+      TestPlane(kSouth, {{3, 0.2}, {7, 0.2}, {7, 3.9}, {3, 3.9}}, "south"),
+      TestPlane(kNorth, {{0, 4.1}, {10, 4.1}, {10, 8}, {0, 8}}, "north")};
   const std::vector<PatchExtension> e =
-      ExtensionsAlongFootprints(planes, {Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})});
+      ExtensionsAlongFootprints(planes, {TestFootprint("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})});
   ASSERT_EQ(e.size(), 2u);
   for (const PatchExtension& x : e) {
     EXPECT_EQ(x.plane, 0);
@@ -66,10 +51,10 @@ TEST(ExtensionsAlongFootprints, GrowthStopsAtAnotherFaceAndAtTheFootprint) {
   // hip end standing in its band at x 1-2.5, and east to the footprint.
   const Ring2 l = {{0, 0}, {10, 0}, {10, 8}, {4, 8}, {4, 14}, {0, 14}};
   const std::vector<RoofPlaneHypothesis> planes = {
-      Hyp(kSouth, {{5, 0.5}, {9, 0.5}, {9, 3.5}, {5, 3.5}}, "south"),
-      Hyp(SlopedPlane({2.5, 2, kRidgeZ}, 45, 180), {{1, 0.5}, {2.5, 0.5}, {2.5, 3.5}, {1, 3.5}},
-          "hip end")};
-  const std::vector<PatchExtension> e = ExtensionsAlongFootprints(planes, {Fp("L", l)});
+      TestPlane(kSouth, {{5, 0.5}, {9, 0.5}, {9, 3.5}, {5, 3.5}}, "south"),
+      TestPlane(SlopedPlane({2.5, 2, kRidgeZ}, 45, 180),
+                {{1, 0.5}, {2.5, 0.5}, {2.5, 3.5}, {1, 3.5}}, "hip end")};
+  const std::vector<PatchExtension> e = ExtensionsAlongFootprints(planes, {TestFootprint("L", l)});
   std::vector<Eigen::Vector4d> south;
   for (const PatchExtension& x : e)
     if (x.plane == 0) south.push_back(Bounds(x.strip.patch));
@@ -84,10 +69,11 @@ TEST(ExtensionsAlongFootprints, GrowthStopsAtAnotherFaceAndAtTheFootprint) {
 
 TEST(ExtensionsAlongFootprints, FlatPlanesAndPlanesOffTheFootprintDoNotGrow) {
   const std::vector<RoofPlaneHypothesis> planes = {
-      Hyp({0, 0, 1, -6}, {{3, 1}, {6, 1}, {6, 6}, {3, 6}}, "flat"),
-      Hyp(kSouth, {{30, 0}, {34, 0}, {34, 4}, {30, 4}}, "elsewhere")};
+      TestPlane({0, 0, 1, -6}, {{3, 1}, {6, 1}, {6, 6}, {3, 6}}, "flat"),
+      TestPlane(kSouth, {{30, 0}, {34, 0}, {34, 4}, {30, 4}}, "elsewhere")};
   EXPECT_TRUE(
-      ExtensionsAlongFootprints(planes, {Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})}).empty());
+      ExtensionsAlongFootprints(planes, {TestFootprint("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})})
+          .empty());
 }
 
 // The north face seen as the hull of its eave (y = 8, x 0-10) and the west
@@ -95,9 +81,9 @@ TEST(ExtensionsAlongFootprints, FlatPlanesAndPlanesOffTheFootprintDoNotGrow) {
 // proposed, within the band and the footprint, with the face's plane.
 TEST(ExtensionsAlongFootprints, TheCornerATriangularPatchLeavesOutIsProposed) {
   const std::vector<RoofPlaneHypothesis> planes = {
-      Hyp(kNorth, {{0, 4.1}, {10, 8}, {0, 8}}, "north"),
-      Hyp(kSouth, {{0, 0}, {10, 0}, {10, 3.9}, {0, 3.9}}, "south")};
-  const Footprint house = Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}});
+      TestPlane(kNorth, {{0, 4.1}, {10, 8}, {0, 8}}, "north"),
+      TestPlane(kSouth, {{0, 0}, {10, 0}, {10, 3.9}, {0, 3.9}}, "south")};
+  const Footprint house = TestFootprint("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}});
   const std::vector<PatchExtension> e = ExtensionsAlongFootprints(planes, {house});
   ASSERT_EQ(e.size(), 1u);
   EXPECT_EQ(e[0].plane, 0);
@@ -122,10 +108,10 @@ TEST(ExtensionsAlongFootprints, TheCornerATriangularPatchLeavesOutIsProposed) {
 // is proposed.
 TEST(ExtensionsAlongFootprints, ACornerAnotherFaceHoldsIsNotFilled) {
   std::vector<RoofPlaneHypothesis> planes = {
-      Hyp(kNorth, {{0, 4.1}, {10, 8}, {0, 8}}, "north"),
-      Hyp(SlopedPlane({8, 6, kRidgeZ}, 45, 0), {{8, 4.5}, {9.8, 4.5}, {9.8, 7}, {8, 7}},
-          "hip end")};
-  const Footprint house = Fp("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}});
+      TestPlane(kNorth, {{0, 4.1}, {10, 8}, {0, 8}}, "north"),
+      TestPlane(SlopedPlane({8, 6, kRidgeZ}, 45, 0), {{8, 4.5}, {9.8, 4.5}, {9.8, 7}, {8, 7}},
+                "hip end")};
+  const Footprint house = TestFootprint("h", {{0, 0}, {10, 0}, {10, 8}, {0, 8}});
   auto filled = [&] {
     int n = 0;
     for (const PatchExtension& x : ExtensionsAlongFootprints(planes, {house}))

@@ -25,12 +25,32 @@ ModelHeightSearch SearchOf(const RoofModel& m, double lo, double hi) {
 std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     const Block& block, const std::vector<cv::Mat>& images,
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
-    const BareFootprintRoofOptions& o, const VerifyOptions& verify, int* tried) {
+    const BareFootprintRoofOptions& o, const VerifyOptions& verify, int* tried, int* beyond) {
+  // The bare footprints, then the parts beyond a ridge, each with the models
+  // to try there.
+  std::vector<Footprint> outlines;
+  std::vector<RoofModelOptions> model_options;
+  std::vector<char> bare(footprints.size(), 0);
+  for (int f : BareFootprints(planes, footprints)) {
+    outlines.push_back(footprints[f]);
+    model_options.push_back(o.model);
+    bare[f] = 1;
+  }
+  const size_t n_bare = outlines.size();
+  if (o.models && o.beyond_ridges)
+    for (FootprintBeyondRidge& r : FootprintsBeyondRidges(planes, footprints, o.beyond)) {
+      if (bare[r.footprint]) continue;
+      outlines.push_back(std::move(r.part));
+      model_options.push_back(o.model);
+      // The other face of a gable falls at the found face's slope.
+      model_options.back().shed_slopes_deg.push_back(r.face_slope_deg);
+    }
   std::vector<ModelHeightSearch> searches;
   std::vector<std::pair<int, std::vector<RoofModel>>> which;
   std::vector<double> ground_z;
-  for (int f : BareFootprints(planes, footprints)) {
-    std::vector<RoofModel> models = RoofModelsOver(footprints[f], o.model);
+  int n_beyond = 0;
+  for (size_t f = 0; f < outlines.size(); ++f) {
+    std::vector<RoofModel> models = RoofModelsOver(outlines[f], model_options[f]);
     if (models.empty()) continue;
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : models[0].faces[0].patch) c += q;
@@ -39,10 +59,12 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     if (!std::isfinite(g)) continue;
     if (!o.models) models.resize(1);
     searches.push_back(SearchOf(models[0], g + o.min_height_m, g + block.max_building_height));
-    which.emplace_back(f, std::move(models));
+    which.emplace_back(static_cast<int>(f), std::move(models));
     ground_z.push_back(g);
+    n_beyond += f >= n_bare;
   }
-  if (tried) *tried = static_cast<int>(which.size());
+  if (tried) *tried = static_cast<int>(which.size()) - n_beyond;
+  if (beyond) *beyond = n_beyond;
   const std::vector<ModelHeight> z_flat = BestModelHeights(block, images, searches, verify);
   std::vector<ModelHeightSearch> sloped;
   std::vector<std::pair<size_t, size_t>> sloped_of;  // (footprint entry, model)
@@ -74,7 +96,7 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     if (!std::isfinite(best[k].second.h)) continue;
     const RoofModel& m = which[k].second[best[k].first];
     for (size_t face = 0; face < m.faces.size(); ++face)
-      roofs.push_back(RoofModelFaceAt(footprints[which[k].first], m, face, best[k].second.h));
+      roofs.push_back(RoofModelFaceAt(outlines[which[k].first], m, face, best[k].second.h));
   }
   return roofs;
 }

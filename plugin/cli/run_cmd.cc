@@ -33,7 +33,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
-       no_lift = false, flat_only = false;
+       no_lift = false, flat_only = false, no_beyond = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -103,6 +103,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-flat_bare_footprints", &flat_only,
             "with footprints, propose only flat roofs over footprints no plane covers (not the "
             "shed and gable models)")
+      .Flag("-no_roofs_beyond_ridges", &no_beyond,
+            "with footprints, do not propose roof models over the part of a footprint beyond the "
+            "top of the one sloped face found over it (the other side of a gable)")
       .Option("-min_edge_support", &r.min_edge_support, "F",
               "drop buildings with less than this share of their visible roof-edge length on an "
               "image edge (attribute edge_support; default 0: keep all)")
@@ -130,6 +133,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.lift_lines = !no_lift;
   r.footprint_growth = !no_growth;
   r.roof_models_over_footprints = !flat_only;
+  r.roofs_beyond_ridges = !no_beyond;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;
   flags.Apply(p);

@@ -724,19 +724,20 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     t0 = Clock::now();
     BareFootprintRoofOptions bo;
     bo.models = r.roof_models_over_footprints;
+    bo.beyond_ridges = r.roofs_beyond_ridges;
     bo.model = r.roof_models;
     bo.min_gain = r.roof_model_min_gain;
     bo.min_height_m = r.assembly.footprint_min_height_m;
-    int tried = 0;
-    std::vector<RoofPlaneHypothesis> roofs =
-        RoofsOverBareFootprints(block, images, roof_planes, footprints, bo, r.verify, &tried);
+    int tried = 0, beyond = 0;
+    std::vector<RoofPlaneHypothesis> roofs = RoofsOverBareFootprints(
+        block, images, roof_planes, footprints, bo, r.verify, &tried, &beyond);
     const size_t proposed = roofs.size();
     const size_t confirmed = add_verified(std::move(roofs));
-    out.stages.push_back(
-        {"roofs over bare footprints",
-         StrFormat("%d of %zu footprints without a plane: %zu faces proposed, %zu confirmed", tried,
-                   footprints.size(), proposed, confirmed),
-         Since(t0)});
+    out.stages.push_back({"roofs over bare footprints",
+                          StrFormat("%d of %zu footprints without a plane, %d beyond the ridge of "
+                                    "their one face: %zu faces proposed, %zu confirmed",
+                                    tried, footprints.size(), beyond, proposed, confirmed),
+                          Since(t0)});
   }
 
   if (r.drop_eave_planes) {

@@ -72,6 +72,9 @@ struct RunRequest {
   // where it fits the images better than the flat roof by
   // roof_model_min_gain.
   bool roof_models_over_footprints = true;
+  // ... and over the part of a footprint beyond the one sloped face found over
+  // it (BareFootprintRoofOptions::beyond_ridges).
+  bool roofs_beyond_ridges = true;
   RoofModelOptions roof_models;
   double roof_model_min_gain = BareFootprintRoofOptions{}.min_gain;
   // With footprints: a sloped face seen over part of its footprint grows
