@@ -284,6 +284,35 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
                           p[with].id.c_str(), 100 * overlap);
   }
 
+  // A derived face against small found planes (see
+  // GroupingOptions::derived_displaces_fraction): it takes their place when
+  // every kept plane it conflicts with is found and that small. Derived
+  // planes only come in and found ones only go out, so it ends.
+  for (bool changed = o.derived_displaces_fraction > 0; changed;) {
+    changed = false;
+    for (int d : by_score) {
+      if (in[d] || !p[d].derived) continue;
+      const double limit = o.derived_displaces_fraction * std::abs(SignedArea(p[d].patch));
+      std::vector<int> rivals;
+      bool small = true;
+      double f = 0;
+      for (int j = 0; j < n && small; ++j) {
+        if (!in[j] || !conflict(d, j, &f)) continue;
+        small = !p[j].derived && std::abs(SignedArea(p[j].patch)) < limit;
+        rivals.push_back(j);
+      }
+      if (!small || rivals.empty()) continue;
+      for (int j : rivals) {
+        in[j] = 0;
+        reason[j] = StrFormat("%s: lies in the derived %s, more than %.0f times its area",
+                              p[j].id.c_str(), p[d].id.c_str(), 1 / o.derived_displaces_fraction);
+      }
+      in[d] = 1;
+      reason[d].clear();
+      changed = true;
+    }
+  }
+
   // One strong plane against several: the greedy order compares pairs, so
   // a plane carried over two neighbouring faces (the north faces of two
   // terraced houses whose ridges differ by a metre) beats each by its

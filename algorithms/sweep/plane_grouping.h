@@ -62,6 +62,18 @@ struct GroupingOptions {
   // this off.
   double conflict_replace_min_step_m = 0.4;
   double conflict_replace_min_line_m = 3.0;
+  // A derived plane (a completion's proposal) yields in conflicts to every
+  // found plane, however small: a 63 m² face of a roof model beyond a ridge
+  // lost to a 4 m² plane that the assembly later dropped (its longest line
+  // 1.4 m), a 103 m² shed roof over a footprint to a 22 m² fragment. Where
+  // every kept plane a rejected derived one conflicts with is found and
+  // smaller than this fraction of its area, the derived plane takes their
+  // place (as two found planes would settle it, by area x score). Over 30
+  // paired runs (10 blocks x matching seeds 1-3): plane quality with
+  // footprints +0.82 +- 0.23 (14 runs up, 2 down), correctness +0.67 +-
+  // 0.21, building quality +1.63 +- 0.58 (12 / 0); from matched lines +0.22
+  // +- 0.15 (4 / 2). 0 turns it off.
+  double derived_displaces_fraction = 0.25;
   // §5: "at least two lines (one of them can be virtual) are required to
   // accept a plane", an efficient culling of erroneous one-line half-planes
   // (tree crowns, shadows). Applied by DropWeaklySupported after the
@@ -110,8 +122,10 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 // after those the images confirmed, derived planes after all found ones),
 // a plane whose patch overlaps a kept one's by more than max_overlap
 // is dropped, unless the two meet along a line that parts their patches
-// (conflict_meet_max_across); then a kept plane that several of the
-// dropped ones explain better together is replaced by them
+// (conflict_meet_max_across); then a dropped derived plane takes the place
+// of the small found planes that kept it out (derived_displaces_fraction);
+// then a kept plane that several of the dropped ones explain better
+// together is replaced by them
 // (conflict_replace_by_several; better: a clearly higher similarity, or a
 // line of theirs the kept plane passes far above or below). Returns the
 // reasons.

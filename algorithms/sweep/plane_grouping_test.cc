@@ -158,6 +158,47 @@ TEST(PlaneGrouping, DerivedPlanesYieldToFoundOnesInConflicts) {
   EXPECT_EQ(rejected[0].rfind("derived: overlaps the stronger found", 0), 0u) << rejected[0];
 }
 
+// A derived face over a footprint against a found plane of a fifth of its
+// area inside it: the derived face takes its place; against one of half its
+// area it yields.
+TEST(PlaneGrouping, ADerivedFaceDisplacesMuchSmallerFoundPlanes) {
+  RoofPlaneHypothesis derived, small, elsewhere;
+  derived.id = "derived";
+  derived.patch = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  derived.score = 30;
+  derived.derived = true;
+  small.id = "small";
+  small.patch = {{2, 1}, {5, 1}, {5, 5}, {2, 5}};  // 12 m² of 60
+  small.score = 50;
+  elsewhere.id = "elsewhere";
+  elsewhere.patch = {{20, 0}, {22, 0}, {22, 2}, {20, 2}};
+  elsewhere.score = 1;
+  std::vector<RoofPlaneHypothesis> planes = {small, derived, elsewhere};
+  std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "derived");
+  EXPECT_EQ(planes[1].id, "elsewhere");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind("small: lies in the derived derived, more than 4 times its area", 0),
+            0u)
+      << rejected[0];
+
+  // Without the rule, or against a found plane of half its area, the
+  // derived face yields.
+  GroupingOptions off;
+  off.derived_displaces_fraction = 0;
+  planes = {small, derived, elsewhere};
+  ResolveConflicts(&planes, off);
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "small");
+  RoofPlaneHypothesis half = small;
+  half.patch = {{0, 0}, {5, 0}, {5, 6}, {0, 6}};
+  planes = {half, derived};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "small");
+}
+
 TEST(PlaneGrouping, PlanesAcceptedOnTheirLinesYieldToConfirmedOnes) {
   RoofPlaneHypothesis confirmed, on_lines, derived;
   confirmed.id = "confirmed";
