@@ -95,7 +95,7 @@ std::vector<PatchExtension> ExtensionsAlongFootprints(
       // fall line, in the footprint) holds beyond each edge of the piece.
       // A convex piece leaves out the rectangle's corners, each beyond one
       // of its edges (a triangle from an eave and a verge leaves one).
-      const Ring2 rect = HullOfIntersection(band(std::max(p0, lo), std::min(p1, hi)), outline);
+      const Ring2 rect = HullOfIntersection(band(p0, p1), outline);
       if (rect.size() < 3) continue;
       const Ring2& pc = piece[k];
       for (size_t m = 0; m < pc.size(); ++m) {
