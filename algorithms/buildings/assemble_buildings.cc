@@ -1241,11 +1241,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       Ring2 outline =
           SquareCorners(FollowBorderLines(ConvexHull(all), planes, active, o), planes, active, o);
       if (fp && outline.size() >= 3) {
-        std::vector<Ring2> pieces = IntersectPolygons(outline, fp->outline);
-        auto largest = std::max_element(
-            pieces.begin(), pieces.end(),
-            [](const Ring2& a, const Ring2& b) { return SignedArea(a) < SignedArea(b); });
-        outline = largest == pieces.end() ? Ring2{} : *largest;
+        outline = LargestIntersection(outline, fp->outline);
         outline_source = "roof planes cut at the footprint";
       }
       if (outline.size() < 3) break;

@@ -153,18 +153,13 @@ std::vector<FootprintBeyondRidge> FootprintsBeyondRidges(
     // A box from the top line uphill past the footprint, clipped to it.
     const Eigen::Vector2d o0 = top * up + along.dot(outline[0]) * along;
     const Eigen::Vector2d w = 2 * reach * along, h = 2 * reach * up;
-    const std::vector<Ring2> parts =
-        IntersectPolygons({o0 - w, o0 + w, o0 + w + h, o0 - w + h}, outline);
-    const auto largest =
-        std::max_element(parts.begin(), parts.end(), [](const Ring2& x, const Ring2& y) {
-          return std::abs(SignedArea(x)) < std::abs(SignedArea(y));
-        });
-    if (largest == parts.end()) continue;
-    const double a = std::abs(SignedArea(*largest));
+    const Ring2 part = LargestIntersection({o0 - w, o0 + w, o0 + w + h, o0 - w + h}, outline);
+    if (part.size() < 3) continue;
+    const double a = SignedArea(part);
     if (a < o.min_fraction * area || a < o.min_area_m2) continue;
     FootprintBeyondRidge r;
     r.part.id = footprints[f].id + " beyond " + planes[face].id;
-    r.part.outline = *largest;
+    r.part.outline = part;
     r.footprint = static_cast<int>(f);
     r.plane = face;
     r.face_slope_deg = std::acos(std::min(1.0, std::abs(planes[face].plane[2]))) * 180 / M_PI;

@@ -113,6 +113,14 @@ double IntersectionArea(const Ring2& a, const Ring2& b) {
   return area;
 }
 
+Ring2 LargestIntersection(const Ring2& a, const Ring2& b) {
+  const std::vector<Ring2> pieces = IntersectPolygons(a, b);
+  const auto largest = std::max_element(
+      pieces.begin(), pieces.end(),
+      [](const Ring2& x, const Ring2& y) { return SignedArea(x) < SignedArea(y); });
+  return largest == pieces.end() ? Ring2{} : *largest;
+}
+
 bool IsConvexRing(const Ring2& r) {
   const size_t n = r.size();
   if (n < 3) return false;

@@ -26,6 +26,9 @@ std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b);
 
 // Area of a ∩ b (m²).
 double IntersectionArea(const Ring2& a, const Ring2& b);
+// The largest piece of a ∩ b (the first of equal ones), counter-clockwise;
+// empty when they do not overlap.
+Ring2 LargestIntersection(const Ring2& a, const Ring2& b);
 
 // True when the ring (either orientation) turns one way only (collinear
 // vertices allowed).
