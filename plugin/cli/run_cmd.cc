@@ -33,7 +33,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
-       no_lift = false, flat_only = false, no_beyond = false;
+       no_lift = false, flat_only = false, no_beyond = false, no_pieces = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -103,6 +103,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-flat_bare_footprints", &flat_only,
             "with footprints, propose only flat roofs over footprints no plane covers (not the "
             "shed and gable models)")
+      .Flag("-no_footprint_pieces", &no_pieces,
+            "with footprints, keep a plane that spans several footprints whole: do not verify "
+            "its piece over each footprint apart and cut away those the images refute (a face "
+            "running on over a neighbour's roof)")
       .Flag("-no_roofs_beyond_ridges", &no_beyond,
             "with footprints, do not propose roof models over the part of a footprint beyond the "
             "top of the one sloped face found over it (the other side of a gable)")
@@ -134,6 +138,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.footprint_growth = !no_growth;
   r.roof_models_over_footprints = !flat_only;
   r.roofs_beyond_ridges = !no_beyond;
+  r.footprint_pieces = !no_pieces;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;
   flags.Apply(p);

@@ -14,6 +14,7 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint_completion.h"
+#include "algorithms/buildings/footprint_pieces.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/format.h"
 #include "algorithms/core/reason_kind.h"
@@ -594,6 +595,32 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   }
 
   roof_planes = find_planes(lines, hps, true, 0.95, 0.99);
+
+  // With footprints: a plane that spans buildings is weighed over each
+  // footprint apart, and cut back where the images refute it there (a face
+  // running on over a neighbour's roof). Before the completions, so that
+  // they can roof what the cut leaves bare.
+  if (!footprints.empty() && r.footprint_pieces) {
+    t0 = Clock::now();
+    const std::vector<FootprintPiece> pieces = PiecesOverFootprints(roof_planes, footprints);
+    std::vector<RoofPlaneHypothesis> hyps;
+    for (const FootprintPiece& q : pieces) hyps.push_back(q.piece);
+    SubProgress none(progress, 0.99, 0.99);
+    const std::vector<PlaneVerification> checks = VerifyPlanes(block, images, hyps, r.verify, none);
+    // Refuted, not merely unverifiable: too few textured samples (score
+    // NaN) leave the piece to the plane's evidence elsewhere.
+    std::vector<char> refuted(pieces.size());
+    for (size_t k = 0; k < pieces.size(); ++k)
+      refuted[k] = !checks[k].accepted && std::isfinite(checks[k].score);
+    const std::vector<int> cut = CutRefutedPieces(pieces, refuted, footprints, &roof_planes);
+    for (int k : cut) {
+      out.rejected.push_back(hyps[k].id + ": " + checks[k].reason);
+      if (trace) trace->push_back({hyps[k], checks[k]});
+    }
+    out.stages.push_back({"planes over several footprints",
+                          StrFormat("%zu pieces verified, %zu cut", pieces.size(), cut.size()),
+                          Since(t0)});
+  }
 
   // Every completion step below proposes planes that are verified like
   // the sweep's own, then settled in the conflicts with those kept so far;

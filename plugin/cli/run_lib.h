@@ -82,6 +82,10 @@ struct RunRequest {
   // that the verification confirms (ExtensionsAlongFootprints).
   bool footprint_growth = true;
   FootprintGrowthOptions growth;
+  // With footprints: the piece of a plane over each footprint it spans is
+  // verified apart and cut away where the images refute it
+  // (PiecesOverFootprints, CutRefutedPieces).
+  bool footprint_pieces = true;
   // Two planes a few degrees apart that meet without a step are merged
   // where the verification confirms the merged plane
   // (NearCoplanarMerges).
