@@ -1,6 +1,7 @@
 #include "algorithms/buildings/footprint_pieces.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
@@ -83,9 +84,13 @@ std::vector<int> CutRefutedPieces(const std::vector<FootprintPiece>& pieces,
     const auto& [kept, dropped] = of_plane[pieces[k].plane];
     if (refuted[k] && !kept.empty()) cut.push_back(static_cast<int>(k));
   }
-  for (const auto& [plane, sides] : of_plane)
-    if (!sides.first.empty() && !sides.second.empty())
-      (*planes)[plane].patch = PatchOverPieces(sides.first, sides.second, o);
+  for (const auto& [plane, sides] : of_plane) {
+    if (sides.first.empty() || sides.second.empty()) continue;
+    RoofPlaneHypothesis& p = (*planes)[plane];
+    p.patch = PatchOverPieces(sides.first, sides.second, o);
+    // Its weight in later conflicts, patch area x similarity, shrinks with it.
+    p.score = std::abs(SignedArea(p.patch)) * p.similarity;
+  }
   return cut;
 }
 

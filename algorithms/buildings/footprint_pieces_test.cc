@@ -80,6 +80,10 @@ TEST(CutRefutedPieces, OnlyWherePiecesAreLeft) {
   const RoofPlaneHypothesis flat =
       TestPlane({0, 0, 1, -6}, {{6.5, 5}, {17, 5}, {17, 9}, {6.5, 9}}, "flat");
   std::vector<RoofPlaneHypothesis> planes = {face, flat};
+  for (RoofPlaneHypothesis& p : planes) {
+    p.similarity = 0.8;
+    p.score = SignedArea(p.patch) * p.similarity;
+  }
   const std::vector<FootprintPiece> pieces = PiecesOverFootprints(planes, kRow);
   ASSERT_EQ(pieces.size(), 5u);  // the face over a, b, c; the flat roof over b, c
   // The face's piece over c refuted, and both pieces of the flat roof.
@@ -87,8 +91,10 @@ TEST(CutRefutedPieces, OnlyWherePiecesAreLeft) {
   EXPECT_EQ(cut, std::vector<int>({2}));
   EXPECT_NEAR(SignedArea(planes[0].patch), 11.5 * 4.8, 1e-9);
   EXPECT_NEAR(IntersectionArea(planes[0].patch, kRow[2].outline), 0, 1e-9);
+  EXPECT_NEAR(planes[0].score, 11.5 * 4.8 * 0.8, 1e-9);
   // The flat roof, refuted everywhere, stays as it was verified.
   EXPECT_EQ(planes[1].patch, flat.patch);
+  EXPECT_NEAR(planes[1].score, 10.5 * 4 * 0.8, 1e-9);
   // Nothing refuted: nothing changes.
   std::vector<RoofPlaneHypothesis> same = {face, flat};
   EXPECT_TRUE(CutRefutedPieces(pieces, {0, 0, 0, 0, 0}, kRow, &same).empty());
