@@ -46,9 +46,9 @@ Ring2 PatchOverPieces(const std::vector<Ring2>& kept, const std::vector<Ring2>& 
 // of their planes: each such plane's patch becomes PatchOverPieces of its
 // other pieces, its score that patch's area x its similarity (as the
 // verification scores planes for the conflicts). A plane whose every piece
-// is refuted stays whole: it was
-// verified as a whole, and no footprint holds the evidence for it.
-// Returns the indices of the pieces cut, ascending.
+// is refuted stays whole: it was verified as a whole, and no footprint
+// holds the evidence for it. Returns the indices of the pieces cut,
+// ascending.
 std::vector<int> CutRefutedPieces(const std::vector<FootprintPiece>& pieces,
                                   const std::vector<char>& refuted,
                                   const std::vector<Footprint>& footprints,

@@ -602,7 +602,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // they can roof what the cut leaves bare.
   if (!footprints.empty() && r.footprint_pieces) {
     t0 = Clock::now();
-    const std::vector<FootprintPiece> pieces = PiecesOverFootprints(roof_planes, footprints);
+    FootprintPieceOptions po;
+    po.min_piece_m2 = r.assembly.footprint_min_piece_m2;  // the pieces the assembly would build
+    const std::vector<FootprintPiece> pieces = PiecesOverFootprints(roof_planes, footprints, po);
     std::vector<RoofPlaneHypothesis> hyps;
     for (const FootprintPiece& q : pieces) hyps.push_back(q.piece);
     SubProgress none(progress, 0.99, 0.99);
@@ -612,7 +614,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<char> refuted(pieces.size());
     for (size_t k = 0; k < pieces.size(); ++k)
       refuted[k] = !checks[k].accepted && std::isfinite(checks[k].score);
-    const std::vector<int> cut = CutRefutedPieces(pieces, refuted, footprints, &roof_planes);
+    const std::vector<int> cut = CutRefutedPieces(pieces, refuted, footprints, &roof_planes, po);
     for (int k : cut) {
       out.rejected.push_back(hyps[k].id + ": " + checks[k].reason);
       if (trace) trace->push_back({hyps[k], checks[k]});
