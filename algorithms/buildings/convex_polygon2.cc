@@ -57,6 +57,13 @@ double SignedArea(const Ring2& r) {
   return 0.5 * a;
 }
 
+Ring2 LargestRing(const std::vector<Ring2>& rings) {
+  const auto largest = std::max_element(
+      rings.begin(), rings.end(),
+      [](const Ring2& a, const Ring2& b) { return SignedArea(a) < SignedArea(b); });
+  return largest == rings.end() ? Ring2{} : *largest;
+}
+
 Eigen::Vector2d FirstMoment(const Ring2& r) {
   Eigen::Vector2d m = Eigen::Vector2d::Zero();
   for (size_t i = 0, n = r.size(); i < n; ++i) {

@@ -19,6 +19,9 @@ Ring2 ConvexHull(std::vector<Eigen::Vector2d> points);
 
 // Signed area (> 0 counter-clockwise).
 double SignedArea(const Ring2& ring);
+// The ring of largest signed area (the first of equal ones); empty when
+// there is none.
+Ring2 LargestRing(const std::vector<Ring2>& rings);
 // Area times centroid (the first moments) of a ring, signed as SignedArea:
 // the centroid is FirstMoment(ring) / SignedArea(ring).
 Eigen::Vector2d FirstMoment(const Ring2& ring);

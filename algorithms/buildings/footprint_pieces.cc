@@ -1,6 +1,5 @@
 #include "algorithms/buildings/footprint_pieces.h"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -57,11 +56,7 @@ Ring2 PatchOverPieces(const std::vector<Ring2>& kept, const std::vector<Ring2>& 
   for (const Ring2& k : kept) points.insert(points.end(), k.begin(), k.end());
   Ring2 hull = ConvexHull(std::move(points));
   for (const Ring2& d : dropped)
-    if (IntersectionArea(hull, d) >= o.min_piece_m2) {
-      return *std::max_element(kept.begin(), kept.end(), [](const Ring2& a, const Ring2& b) {
-        return SignedArea(a) < SignedArea(b);
-      });
-    }
+    if (IntersectionArea(hull, d) >= o.min_piece_m2) return LargestRing(kept);
   return hull;
 }
 

@@ -114,11 +114,7 @@ double IntersectionArea(const Ring2& a, const Ring2& b) {
 }
 
 Ring2 LargestIntersection(const Ring2& a, const Ring2& b) {
-  const std::vector<Ring2> pieces = IntersectPolygons(a, b);
-  const auto largest = std::max_element(
-      pieces.begin(), pieces.end(),
-      [](const Ring2& x, const Ring2& y) { return SignedArea(x) < SignedArea(y); });
-  return largest == pieces.end() ? Ring2{} : *largest;
+  return LargestRing(IntersectPolygons(a, b));
 }
 
 bool IsConvexRing(const Ring2& r) {
