@@ -8,7 +8,9 @@
 #include <limits>
 #include <numeric>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <unordered_map>
+#include <utility>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
@@ -492,6 +494,25 @@ std::string OffLineRefusal(const Block& block, const std::vector<cv::Mat>& grey,
   return buf;
 }
 
+// The line in plan on which all `lines` lie (each endpoint within
+// max_offset_m of the longest one's line): a point on it and its unit
+// normal. None when the lines span a face, or there are none.
+std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> HingeOf(
+    const std::vector<std::array<Eigen::Vector2d, 2>>& lines, double max_offset_m) {
+  const std::array<Eigen::Vector2d, 2>* longest = nullptr;
+  for (const auto& l : lines)
+    if (!longest || (l[1] - l[0]).norm() > ((*longest)[1] - (*longest)[0]).norm()) longest = &l;
+  if (!longest) return std::nullopt;
+  const Eigen::Vector2d d = (*longest)[1] - (*longest)[0];
+  if (d.norm() < 1e-3) return std::nullopt;
+  const Eigen::Vector2d q0 = (*longest)[0];
+  const Eigen::Vector2d m = Eigen::Vector2d(-d.y(), d.x()).normalized();
+  for (const auto& l : lines)
+    for (const Eigen::Vector2d& q : l)
+      if (std::abs(m.dot(q - q0)) > max_offset_m) return std::nullopt;
+  return std::make_pair(q0, m);
+}
+
 }  // namespace
 
 std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<cv::Mat>& images,
@@ -604,24 +625,41 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     const double zc = PlaneZ(p.plane, c.x(), c.y());
     Scores best_tilt;
     const double alpha = -p.plane[0] / p.plane[2], beta = -p.plane[1] / p.plane[2];
+    // The plane z = alpha x + beta y + ..., turned so that it passes through
+    // `pivot` with the gradient (a, b).
+    auto try_tilted = [&](double a, double b, const Eigen::Vector3d& pivot) {
+      Eigen::Vector3d n(-a, -b, 1);
+      n.normalize();
+      const Eigen::Vector4d tilted(n.x(), n.y(), n.z(), -n.dot(pivot));
+      Scores t = ScorePlane(block, grey, samples, tilted, o);
+      const double ts = t.n ? t.sum / t.n : 0.0;
+      if (ts > v.score_tilted || best_tilt.values.empty()) best_tilt = std::move(t);
+      v.score_tilted = std::max(v.score_tilted, ts);
+    };
     for (int axis = 0; axis < 2; ++axis) {
       double reach = 0;
       for (const auto& q : p.patch) reach = std::max(reach, std::abs(q[axis] - c[axis]));
       if (reach < 1e-3) continue;
-      for (int sign : {-1, 1}) {
-        double a = alpha, b = beta;
-        (axis == 0 ? a : b) += sign * v.offset_m / reach;
-        // z = a (x - cx) + b (y - cy) + zc  ->  n ~ (-a, -b, 1).
-        Eigen::Vector3d n(-a, -b, 1);
-        const double norm = n.norm();
-        n /= norm;
-        const Eigen::Vector4d tilted(n.x(), n.y(), n.z(),
-                                     -n.dot(Eigen::Vector3d(c.x(), c.y(), zc)));
-        Scores t = ScorePlane(block, grey, samples, tilted, o);
-        const double ts = t.n ? t.sum / t.n : 0.0;
-        if (ts > v.score_tilted || best_tilt.values.empty()) best_tilt = std::move(t);
-        v.score_tilted = std::max(v.score_tilted, ts);
-      }
+      for (int sign : {-1, 1})
+        try_tilted(alpha + (axis == 0 ? sign * v.offset_m / reach : 0.0),
+                   beta + (axis == 1 ? sign * v.offset_m / reach : 0.0), {c.x(), c.y(), zc});
+    }
+    // A plane whose lines all lie on one line in plan is hinged on it: the
+    // sweep chose its slope about that line, and the samples along the line
+    // confirm any slope about it. Turned about the patch centre, the
+    // alternatives move the line off its edge, and its own samples vote
+    // for the plane; turned about the hinge, only the face away from it
+    // votes (see VerifyOptions::hinge_tilt).
+    if (const auto hinge =
+            o.hinge_tilt ? HingeOf(p.lines_xy, o.hinge_max_offset_m) : std::nullopt) {
+      const auto& [q0, m] = *hinge;  // a point on it, and the unit normal in plan
+      double reach = 0;
+      for (const auto& q : p.patch) reach = std::max(reach, std::abs(m.dot(q - q0)));
+      if (reach > 1e-3)
+        for (int sign : {-1, 1})
+          try_tilted(alpha + sign * v.offset_m / reach * m.x(),
+                     beta + sign * v.offset_m / reach * m.y(),
+                     {q0.x(), q0.y(), PlaneZ(p.plane, q0.x(), q0.y())});
     }
     // The best tilted plane against this one on the samples both scored:
     // each plane's own textured samples differ a little (the reference

@@ -80,6 +80,45 @@ TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
   }
 }
 
+// A plane hinged on one line: the face's eave (y = 6, z = 6) carries it,
+// but at a slope of 30 + d degrees. Turned about the patch centre, the
+// alternatives lift the eave off its edge and lose there; turned about the
+// eave (VerifyOptions::hinge_tilt), only the face away from it votes, and a
+// plane 10 degrees flatter is refused. The true plane on the same line passes.
+TEST(VerifyPlanes, PlaneHingedOnOneLineAtAWrongSlopeIsRefused) {
+  TestScene scene;
+  scene.quads = {Face(true)};
+  const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-5, 6), Eigen::Vector2d(5, 6)};
+  auto hinged = [&](double slope_deg) {
+    RoofPlaneHypothesis h = Hypothesis(Face(true));
+    // z = 6 + (6 - y) tan(slope): through the eave, rising towards y = 0.
+    const double t = std::tan(slope_deg * M_PI / 180);
+    Eigen::Vector3d n(0, t, 1);
+    n.normalize();
+    h.plane << n, -n.dot(Eigen::Vector3d(0, 6, 6));
+    h.lines_xy = {eave};
+    return h;
+  };
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  NullProgress progress;
+  const std::vector<RoofPlaneHypothesis> planes = {hinged(20), hinged(30)};
+  const auto v = VerifyPlanes(block, images, planes, VerifyOptions(), progress);
+  ASSERT_EQ(v.size(), 2u);
+  // Measured: -0.350, standard error 0.011; the true plane +0.449.
+  EXPECT_EQ(v[0].reason.rfind("slope not confirmed", 0), 0u) << v[0].reason;
+  EXPECT_LT(v[0].tilt_difference, -VerifyOptions{}.tilt_z * v[0].tilt_se);
+  EXPECT_TRUE(v[1].accepted) << v[1].reason;
+  // Without the hinge, the 20 degree plane passes (measured: -0.012 against
+  // the centre tilts, standard error 0.026).
+  VerifyOptions centre_only;
+  centre_only.hinge_tilt = false;
+  const auto k = VerifyPlanes(block, images, planes, centre_only, progress);
+  ASSERT_EQ(k.size(), 2u);
+  EXPECT_TRUE(k[0].accepted) << k[0].reason;
+  EXPECT_TRUE(k[1].accepted) << k[1].reason;
+}
+
 // Delineation by the verification: a patch that runs 2 m past the eave
 // (y = 6) over the ground 6 m below is cut back to the face; the patch of
 // the first test, all on the face, keeps (nearly) all of its area; with the
