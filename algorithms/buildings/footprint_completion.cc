@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "algorithms/buildings/polygon2.h"
+#include "algorithms/geometry/slope.h"
 
 namespace roofsweep {
 namespace {
@@ -162,7 +163,7 @@ std::vector<FootprintBeyondRidge> FootprintsBeyondRidges(
     r.part.outline = part;
     r.footprint = static_cast<int>(f);
     r.plane = face;
-    r.face_slope_deg = std::acos(std::min(1.0, std::abs(planes[face].plane[2]))) * 180 / M_PI;
+    r.face_slope_deg = SlopeDeg(planes[face].plane.head<3>());
     out.push_back(std::move(r));
   }
   return out;

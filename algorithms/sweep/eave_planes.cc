@@ -3,23 +3,17 @@
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/geometry/slope.h"
 #include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
-namespace {
-
-double SlopeDeg(const Eigen::Vector4d& p) {
-  return std::acos(std::min(1.0, std::abs(p[2]) / p.head<3>().norm())) * 180 / M_PI;
-}
-
-}  // namespace
 
 std::vector<std::string> FlatPlanesBeyondEaves(const std::vector<RoofPlaneHypothesis>& planes,
                                                const EavePlaneOptions& o) {
   std::vector<std::string> why(planes.size());
   for (size_t f = 0; f < planes.size(); ++f) {
     const RoofPlaneHypothesis& F = planes[f];
-    if (F.patch.size() < 3 || SlopeDeg(F.plane) > o.max_flat_slope_deg) continue;
+    if (F.patch.size() < 3 || SlopeDeg(F.plane.head<3>()) > o.max_flat_slope_deg) continue;
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& q : F.patch) c += q;
     c /= static_cast<double>(F.patch.size());
@@ -38,7 +32,8 @@ std::vector<std::string> FlatPlanesBeyondEaves(const std::vector<RoofPlaneHypoth
       bool eave = false;
       for (size_t p = 0; p < planes.size() && !eave; ++p) {
         const RoofPlaneHypothesis& P = planes[p];
-        if (p == f || P.patch.size() < 3 || SlopeDeg(P.plane) < o.min_face_slope_deg) continue;
+        if (p == f || P.patch.size() < 3 || SlopeDeg(P.plane.head<3>()) < o.min_face_slope_deg)
+          continue;
         const Eigen::Vector2d beyond = m + o.probe_m * n;
         if (!InsideConvex(P.patch, beyond) || InsideConvex(P.patch, c)) continue;
         if (std::abs(PlaneZ(P.plane, m.x(), m.y()) - zf) > o.max_height_step_m) continue;

@@ -9,6 +9,7 @@
 #include "algorithms/core/error.h"
 #include "algorithms/eval/eval_report.h"
 #include "algorithms/eval/overlay.h"
+#include "algorithms/geometry/slope.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/output_file.h"
@@ -144,7 +145,7 @@ EvalReport RunEval(const EvalRequest& r) {
       if (losses.stage[i].empty()) continue;
       const PlaneRecord& p = report.result.reference_planes[i];
       const Building& b = truth.buildings[p.building];
-      const double slope = std::acos(std::min(1.0, std::abs(p.normal.z()))) * 180.0 / M_PI;
+      const double slope = SlopeDeg(p.normal);
       list.push_back({{"reference_plane", i},
                       {"building_id", p.building_id},
                       {"roof_type", RoofTypeName(b.roof_type)},

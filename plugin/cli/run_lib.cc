@@ -19,6 +19,7 @@
 #include "algorithms/core/format.h"
 #include "algorithms/core/reason_kind.h"
 #include "algorithms/geometry/block_overview.h"
+#include "algorithms/geometry/slope.h"
 #include "algorithms/matching/match_lines.h"
 #include "algorithms/sweep/plane_fit.h"
 #include "algorithms/sweep/sweep_half_planes.h"
@@ -154,7 +155,7 @@ void WritePlaneLayer(const std::string& path, const std::vector<PlaneTrace>& tra
     const auto breaks = breaks_of.find(h.id);
     f.integers["colour_breaks"] = breaks != breaks_of.end() ? breaks->second : 0;
     f.reals["longest_line_m"] = h.longest_line_m;
-    f.reals["slope_deg"] = std::acos(std::clamp(std::abs(h.plane[2]), 0.0, 1.0)) * 180 / M_PI;
+    f.reals["slope_deg"] = SlopeDeg(h.plane.head<3>());
     f.reals["area_m2"] = std::abs(SignedArea(h.patch));
     // The evidence exists only for planes the verification could score.
     if (std::isfinite(t.check.score)) {
