@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -151,6 +152,41 @@ bool LineOffPlane(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis& p, do
   return false;
 }
 
+// True when the patch of q lies in p's plane: normals within
+// max_angle_deg, and p within max_distance_m of q at the centre of q's
+// patch (the grouping's test for a half-plane joining a plane).
+bool CoplanarWith(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
+                  const GroupingOptions& o) {
+  if (!(std::abs(p.plane[2]) > 1e-6 && std::abs(q.plane[2]) > 1e-6) || q.patch.empty())
+    return false;
+  if (std::abs(p.plane.head<3>().normalized().dot(q.plane.head<3>().normalized())) <
+      std::cos(o.max_angle_deg * kDeg))
+    return false;
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& x : q.patch) c += x;
+  c /= static_cast<double>(q.patch.size());
+  return std::abs(PlaneZ(p.plane, c.x(), c.y()) - PlaneZ(q.plane, c.x(), c.y())) <=
+         o.max_distance_m;
+}
+
+// How deep inside the convex patch the lines reach: the largest distance
+// from the patch's border of a point of theirs inside it (ends, quarters,
+// middle); 0 when none is inside.
+double LineDepthInside(const Ring2& patch,
+                       const std::vector<std::array<Eigen::Vector2d, 2>>& lines) {
+  double depth = 0;
+  for (const auto& l : lines)
+    for (int i = 0; i <= 4; ++i) {
+      const Eigen::Vector2d x = l[0] + 0.25 * i * (l[1] - l[0]);
+      if (!InsideConvex(patch, x)) continue;
+      double d = std::numeric_limits<double>::infinity();
+      for (size_t k = 0; k < patch.size(); ++k)
+        d = std::min(d, PointSegmentDistance(x, patch[k], patch[(k + 1) % patch.size()]));
+      depth = std::max(depth, d);
+    }
+  return depth;
+}
+
 }  // namespace
 
 bool VirtualLine(const PlaneGroup& p, const PlaneGroup& q, const GroupingOptions& o) {
@@ -288,24 +324,33 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   // GroupingOptions::derived_displaces_fraction): it takes their place when
   // every kept plane it conflicts with is found and that small. Derived
   // planes only come in and found ones only go out, so it ends.
-  for (bool changed = o.derived_displaces_fraction > 0; changed;) {
+  for (bool changed = o.derived_displaces_fraction > 0 || o.derived_absorbs_coplanar; changed;) {
     changed = false;
     for (int d : by_score) {
       if (in[d] || !p[d].derived) continue;
-      const double limit = o.derived_displaces_fraction * std::abs(SignedArea(p[d].patch));
+      const double area = std::abs(SignedArea(p[d].patch));
+      const double limit = o.derived_displaces_fraction * area;
       std::vector<int> rivals;
       bool small = true;
       double f = 0;
       for (int j = 0; j < n && small; ++j) {
         if (!in[j] || !conflict(d, j, &f)) continue;
-        small = !p[j].derived && std::abs(SignedArea(p[j].patch)) < limit;
+        const double a = std::abs(SignedArea(p[j].patch));
+        const bool fragment =
+            o.derived_absorbs_coplanar && a < area && CoplanarWith(p[d], p[j], o) &&
+            LineDepthInside(p[d].patch, p[j].lines_xy) <= o.derived_absorbs_max_line_depth_m;
+        small = !p[j].derived && (a < limit || fragment);
         rivals.push_back(j);
       }
       if (!small || rivals.empty()) continue;
       for (int j : rivals) {
         in[j] = 0;
-        reason[j] = StrFormat("%s: lies in the derived %s, more than %.0f times its area",
-                              p[j].id.c_str(), p[d].id.c_str(), 1 / o.derived_displaces_fraction);
+        reason[j] =
+            std::abs(SignedArea(p[j].patch)) < limit
+                ? StrFormat("%s: lies in the derived %s, more than %.0f times its area",
+                            p[j].id.c_str(), p[d].id.c_str(), 1 / o.derived_displaces_fraction)
+                : StrFormat("%s: lies in the derived %s, larger and coplanar with it",
+                            p[j].id.c_str(), p[d].id.c_str());
       }
       in[d] = 1;
       reason[d].clear();

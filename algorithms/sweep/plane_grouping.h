@@ -74,6 +74,17 @@ struct GroupingOptions {
   // 0.21, building quality +1.63 +- 0.58 (12 / 0); from matched lines +0.22
   // +- 0.15 (4 / 2). 0 turns it off.
   double derived_displaces_fraction = 0.25;
+  // ... and it also takes the place of smaller found planes that are
+  // coplanar with it (normals within max_angle_deg, and within
+  // max_distance_m of it at their patch's centre): §5's rule for coplanar
+  // conflicts is to merge, and such a plane is a fragment of the derived
+  // face (a gable face found only along part of its ridge, against its
+  // mirror image of the opposite face, whole). Unless one of its lines
+  // runs more than derived_absorbs_max_line_depth_m inside the derived
+  // patch: there it bounds something (a mirrored face carried past the
+  // verges of a neighbour's roof, its source plane's overshoot).
+  bool derived_absorbs_coplanar = true;
+  double derived_absorbs_max_line_depth_m = 1.0;
   // §5: "at least two lines (one of them can be virtual) are required to
   // accept a plane", an efficient culling of erroneous one-line half-planes
   // (tree crowns, shadows). Applied by DropWeaklySupported after the

@@ -199,6 +199,58 @@ TEST(PlaneGrouping, ADerivedFaceDisplacesMuchSmallerFoundPlanes) {
   EXPECT_EQ(planes[0].id, "small");
 }
 
+// A gable face found along part of its ridge, against the mirror image of
+// the opposite face: coplanar, so the derived face takes its place though
+// it is almost half its area; 0.5 m higher it is another roof, and the
+// derived face yields, as it does when a line of the fragment runs deep
+// inside it.
+TEST(PlaneGrouping, ADerivedFaceAbsorbsACoplanarFragmentOfIt) {
+  // z = 10 + 0.7 y, rising to the ridge at y = 6.
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -0.7, 1).normalized();
+  auto plane_at = [&](double z0) { return Eigen::Vector4d(n.x(), n.y(), n.z(), -n.z() * z0); };
+  RoofPlaneHypothesis derived, fragment;
+  derived.id = "derived";
+  derived.plane = plane_at(10);
+  derived.patch = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  derived.score = 30;
+  derived.derived = true;
+  fragment.id = "fragment";
+  fragment.plane = plane_at(10.05);
+  fragment.patch = {{0, 1}, {5, 1}, {5, 6}, {0, 6}};                     // 25 m² of 60
+  fragment.lines_xy = {{Eigen::Vector2d(0, 6), Eigen::Vector2d(5, 6)}};  // along the ridge
+  fragment.score = 50;
+  std::vector<RoofPlaneHypothesis> planes = {fragment, derived};
+  std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "derived");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind("fragment: lies in the derived derived, larger and coplanar", 0), 0u)
+      << rejected[0];
+
+  fragment.plane = plane_at(10.5);
+  planes = {fragment, derived};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "fragment");
+
+  // Turned off, the derived face yields to the coplanar fragment too.
+  GroupingOptions off;
+  off.derived_absorbs_coplanar = false;
+  fragment.plane = plane_at(10.05);
+  planes = {fragment, derived};
+  ResolveConflicts(&planes, off);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "fragment");
+
+  // A line of the fragment down the middle of the derived face (2.5 m
+  // inside it) bounds something there: the derived face yields.
+  fragment.lines_xy.push_back({Eigen::Vector2d(5, 1), Eigen::Vector2d(5, 6)});
+  planes = {fragment, derived};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "fragment");
+}
+
 TEST(PlaneGrouping, PlanesAcceptedOnTheirLinesYieldToConfirmedOnes) {
   RoofPlaneHypothesis confirmed, on_lines, derived;
   confirmed.id = "confirmed";
