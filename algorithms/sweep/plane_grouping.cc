@@ -154,7 +154,7 @@ bool LineOffPlane(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis& p, do
 
 // True when the patch of q lies in p's plane: normals within
 // max_angle_deg, and p within max_distance_m of q at the centre of q's
-// patch (the grouping's test for a half-plane joining a plane).
+// patch (the grouping's tolerances for a half-plane joining a plane).
 bool CoplanarWith(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
                   const GroupingOptions& o) {
   if (!(std::abs(p.plane[2]) > 1e-6 && std::abs(q.plane[2]) > 1e-6) || q.patch.empty())
@@ -322,7 +322,8 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
 
   // A derived face against small found planes (see
   // GroupingOptions::derived_displaces_fraction): it takes their place when
-  // every kept plane it conflicts with is found and that small. Derived
+  // every kept plane it conflicts with is found and that small, or a
+  // smaller coplanar fragment of it (derived_absorbs_coplanar). Derived
   // planes only come in and found ones only go out, so it ends.
   for (bool changed = o.derived_displaces_fraction > 0 || o.derived_absorbs_coplanar; changed;) {
     changed = false;
@@ -336,10 +337,11 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       for (int j = 0; j < n && small; ++j) {
         if (!in[j] || !conflict(d, j, &f)) continue;
         const double a = std::abs(SignedArea(p[j].patch));
-        const bool fragment =
-            o.derived_absorbs_coplanar && a < area && CoplanarWith(p[d], p[j], o) &&
-            LineDepthInside(p[d].patch, p[j].lines_xy) <= o.derived_absorbs_max_line_depth_m;
-        small = !p[j].derived && (a < limit || fragment);
+        small =
+            !p[j].derived &&
+            (a < limit ||
+             (o.derived_absorbs_coplanar && a < area && CoplanarWith(p[d], p[j], o) &&
+              LineDepthInside(p[d].patch, p[j].lines_xy) <= o.derived_absorbs_max_line_depth_m));
         rivals.push_back(j);
       }
       if (!small || rivals.empty()) continue;

@@ -134,7 +134,8 @@ GroupingResult GroupHalfPlanes(const std::vector<SweepLine>& lines,
 // a plane whose patch overlaps a kept one's by more than max_overlap
 // is dropped, unless the two meet along a line that parts their patches
 // (conflict_meet_max_across); then a dropped derived plane takes the place
-// of the small found planes that kept it out (derived_displaces_fraction);
+// of the small found planes that kept it out (derived_displaces_fraction),
+// or of the smaller ones coplanar with it (derived_absorbs_coplanar);
 // then a kept plane that several of the dropped ones explain better
 // together is replaced by them
 // (conflict_replace_by_several; better: a clearly higher similarity, or a
