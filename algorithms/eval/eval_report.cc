@@ -61,6 +61,15 @@ nlohmann::json VertexPlacesJson(const GeometryScores& g) {
   return j;
 }
 
+// {"uncovered": {"count": n, "area_m2": a}, "other_slope": ..., "several": ...}
+nlohmann::json UnmatchedJson(const UnmatchedPlanes& u) {
+  static const char* const kKeys[kUnmatchedKinds] = {"uncovered", "other_slope", "several"};
+  nlohmann::json j = nlohmann::json::object();
+  for (int k = 0; k < kUnmatchedKinds; ++k)
+    j[kKeys[k]] = {{"count", u.count[k]}, {"area_m2", u.area_m2[k]}};
+  return j;
+}
+
 nlohmann::json InputJson(const InputCounts& c) {
   return {{"roof_polygons", c.roof_polygons},
           {"vertical_roof_polygons", c.vertical},
@@ -89,6 +98,15 @@ std::string FormatTable(const EvalResult& r) {
   t.Row("over-segmented (1:M)", std::to_string(p.n_1_to_m), "reference planes");
   t.Row("under-segmented (N:1)", std::to_string(p.n_n_to_1), "result planes");
   t.Row("N:M clusters", std::to_string(p.n_n_to_m));
+  // Why planes went unmatched (UnmatchedKind): where to look first.
+  for (const bool result_side : {true, false}) {
+    const UnmatchedPlanes& u = result_side ? p.false_result : p.missed_reference;
+    t.Row(result_side ? "false result planes" : "missed reference planes",
+          std::to_string(result_side ? p.n_result - p.tp_result : p.n_reference - p.tp_reference));
+    for (int k = 0; k < kUnmatchedKinds; ++k)
+      t.Row(std::string("  ") + UnmatchedKindName(static_cast<UnmatchedKind>(k), result_side),
+            std::to_string(u.count[k]), Fmt(u.area_m2[k], "%.0f m2"));
+  }
   t.Section("Geometry of matched planes");
   t.Row("matched pairs", std::to_string(g.matched_pairs));
   t.Row("normal angle median", Fmt(g.angle_median_deg, "%.2f deg"));
@@ -178,7 +196,9 @@ nlohmann::json ToJson(const EvalResult& r) {
                       {"n_reference_large", p.n_reference_large},
                       {"n_result_large", p.n_result_large},
                       {"tp_reference_large", p.tp_reference_large},
-                      {"tp_result_large", p.tp_result_large}};
+                      {"tp_result_large", p.tp_result_large},
+                      {"false_result", UnmatchedJson(p.false_result)},
+                      {"missed_reference", UnmatchedJson(p.missed_reference)}};
   j["geometry"] = {{"matched_pairs", g.matched_pairs},
                    {"angle_median_deg", Num(g.angle_median_deg)},
                    {"angle_rms_deg", Num(g.angle_rms_deg)},

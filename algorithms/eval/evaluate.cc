@@ -82,6 +82,8 @@ struct SideMatch {
   std::vector<int> any_best;      // counterpart of largest IoU regardless of the rule
   std::vector<double> best_area;  // overlap with `best`
   std::vector<double> any_area;   // overlap with `any_best`
+  // For UnmatchedKind: the largest single overlap, and all overlaps summed.
+  std::vector<double> largest_area, summed_area;
   int tp = 0;
 };
 
@@ -95,9 +97,13 @@ SideMatch MatchSide(const std::vector<Region>& regions, const std::vector<Region
   m.any_best.assign(n, -1);
   m.best_area.assign(n, 0);
   m.any_area.assign(n, 0);
+  m.largest_area.assign(n, 0);
+  m.summed_area.assign(n, 0);
   std::vector<double> best_iou(n, -1), any_iou(n, -1);
   for (const Overlap& o : overlaps) {
     const int i = pick(o), j = other(o);
+    m.largest_area[i] = std::max(m.largest_area[i], o.area);
+    m.summed_area[i] += o.area;
     const double iou = o.area / std::max(regions[i].area + others[j].area - o.area, 1e-12);
     if (iou > any_iou[i]) {
       any_iou[i] = iou;
@@ -174,7 +180,8 @@ std::vector<Region> Regions(const eval::RoofPlaneSet& s) {
 }
 
 std::vector<PlaneRecord> Records(const eval::RoofPlaneSet& s, const CityModel& model,
-                                 const SideMatch& m, const std::vector<Region>& other) {
+                                 const SideMatch& m, const std::vector<Region>& other,
+                                 double fraction) {
   std::vector<PlaneRecord> out;
   for (size_t i = 0; i < s.planes.size(); ++i) {
     const auto& p = s.planes[i];
@@ -189,6 +196,14 @@ std::vector<PlaneRecord> Records(const eval::RoofPlaneSet& s, const CityModel& m
       r.angle_deg = AngleDeg(p.normal, other[r.counterpart].normal);
       r.overlap_fraction =
           (r.true_positive ? m.best_area[i] : m.any_area[i]) / std::max(p.plan_area, 1e-12);
+    }
+    if (!r.true_positive) {
+      // Overlaps are summed, so planes of the other model stacked in plan
+      // (a dormer over its roof) could count twice: capped at the whole.
+      const double covered = std::min(m.summed_area[i], p.plan_area);
+      r.unmatched = covered < fraction * p.plan_area              ? UnmatchedKind::kUncovered
+                    : m.largest_area[i] >= fraction * p.plan_area ? UnmatchedKind::kOtherSlope
+                                                                  : UnmatchedKind::kSeveral;
     }
     out.push_back(r);
   }
@@ -381,6 +396,18 @@ const char* VertexPlaceName(VertexPlace place) {
   return "?";
 }
 
+const char* UnmatchedKindName(UnmatchedKind kind, bool result_plane) {
+  switch (kind) {
+    case UnmatchedKind::kUncovered:
+      return result_plane ? "off the reference roofs" : "not covered by the result";
+    case UnmatchedKind::kOtherSlope:
+      return "at another slope";
+    case UnmatchedKind::kSeveral:
+      return result_plane ? "across reference planes" : "in pieces of result planes";
+  }
+  return "?";
+}
+
 EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
                     const std::vector<Segment3>* lines,
                     const std::vector<Segment3>* extra_reference_segments) {
@@ -419,8 +446,17 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
   s.correctness = Ratio(mr.tp, s.n_result);
   s.quality = Ratio(mt.tp, s.n_reference + s.n_result - mr.tp);
   ScoreSegmentation(rr, rt, overlaps, options.segmentation_overlap_fraction, &s);
-  out.result_planes = Records(res, result, mr, rt);
-  out.reference_planes = Records(ref, truth, mt, rr);
+  out.result_planes = Records(res, result, mr, rt, options.plane_overlap_fraction);
+  out.reference_planes = Records(ref, truth, mt, rr, options.plane_overlap_fraction);
+  auto count_unmatched = [](const std::vector<PlaneRecord>& planes, UnmatchedPlanes* u) {
+    for (const PlaneRecord& p : planes) {
+      if (p.true_positive) continue;
+      ++u->count[static_cast<int>(p.unmatched)];
+      u->area_m2[static_cast<int>(p.unmatched)] += p.plan_area;
+    }
+  };
+  count_unmatched(out.result_planes, &s.false_result);
+  count_unmatched(out.reference_planes, &s.missed_reference);
   auto count_large = [&](const std::vector<PlaneRecord>& planes, int* n, int* tp) {
     for (const PlaneRecord& p : planes)
       if (p.plan_area >= options.large_plane_m2) ++*n, *tp += p.true_positive;

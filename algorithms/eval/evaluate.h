@@ -41,6 +41,8 @@
 // * Each plane's counterpart is, among the planes that make it TP, the one
 //   of largest intersection-over-union (so a nested plane of the other model
 //   does not take the place of the true twin).
+// * A plane without a counterpart is told by what covers it (UnmatchedKind):
+//   not covered, covered at another slope, or covered only by several.
 // * Geometry over matched pairs (each TP reference plane with its
 //   counterpart): normal angle
 //   median/RMS; vertex RMS = RMS of the plan distances from each vertex of
@@ -86,6 +88,23 @@ struct EvalOptions {
   eval::LineEvalOptions lines;  // 3D line tolerances (10 cm, 10°)
 };
 
+// Why a plane has no counterpart (is not a true positive), from its
+// overlaps with the other model's planes:
+// * kUncovered: they cover less than plane_overlap_fraction of it. A false
+//   result plane off the reference roofs (a tree crown, the ground, a face
+//   run on past an eave or over a yard); a missed reference plane that no
+//   result roof covers.
+// * kOtherSlope: one of them covers that much, but at a normal angle above
+//   max_normal_angle_deg (a wrong sweep angle, a flat roof as a shed).
+// * kSeveral: together they cover that much, none alone does. A result
+//   plane across several reference faces (two faces as one, a face run on
+//   over its neighbour); a reference plane held by fragments.
+enum class UnmatchedKind { kUncovered = 0, kOtherSlope, kSeveral };
+constexpr int kUnmatchedKinds = 3;
+// `result_plane` picks the wording for a false result plane or a missed
+// reference plane.
+const char* UnmatchedKindName(UnmatchedKind kind, bool result_plane);
+
 struct PlaneRecord {
   int building = -1;  // index into the model's buildings
   std::string building_id;
@@ -95,6 +114,13 @@ struct PlaneRecord {
   int counterpart = -1;         // in the other model, largest IoU (-1: none)
   double overlap_fraction = 0;  // of this plane's area, with that counterpart
   double angle_deg = 0;         // with that counterpart
+  UnmatchedKind unmatched = UnmatchedKind::kUncovered;  // when not a true positive
+};
+
+// Planes without a counterpart by UnmatchedKind: how many, their plan area.
+struct UnmatchedPlanes {
+  std::array<int, kUnmatchedKinds> count{};
+  std::array<double, kUnmatchedKinds> area_m2{};
 };
 
 struct RoofPlaneScores {
@@ -107,6 +133,8 @@ struct RoofPlaneScores {
   int n_reference_large = 0, n_result_large = 0;
   int tp_reference_large = 0, tp_result_large = 0;
   std::optional<double> completeness_large, correctness_large;
+  // Why the result planes are false and the reference planes missed.
+  UnmatchedPlanes false_result, missed_reference;
 };
 
 struct GeometryScores {

@@ -13,8 +13,10 @@ int Eval(const std::vector<std::string>& args, Context&) {
   bool json = false;
   ArgParser p("eval",
               "Scores a LoD2 reconstruction against ground truth like the ISPRS benchmark: roof "
-              "plane completeness/correctness/quality, normal-angle, vertex and height errors, "
-              "buildings, roof types, and 3D lines when given.");
+              "plane completeness/correctness/quality (each false or missed plane told by what "
+              "covers it: nothing, a plane at another slope, or only several planes together), "
+              "normal-angle, vertex and height errors, buildings, roof types, and 3D lines when "
+              "given.");
   p.Positional("RESULT", &r.result, "reconstructed model (CityGML, CityJSON, GPKG)")
       .Positional("GROUNDTRUTH", &r.truth,
                   "ground-truth model, or a folder written by roofsweep simulate")
