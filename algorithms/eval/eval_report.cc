@@ -61,12 +61,12 @@ nlohmann::json VertexPlacesJson(const GeometryScores& g) {
   return j;
 }
 
-// {"uncovered": {"count": n, "area_m2": a}, "other_slope": ..., "several": ...}
+// {"uncovered": {"count": n, "area_m2": a}, "other_slope": ..., ...} (UnmatchedKindKey)
 nlohmann::json UnmatchedJson(const UnmatchedPlanes& u) {
-  static const char* const kKeys[kUnmatchedKinds] = {"uncovered", "other_slope", "several"};
   nlohmann::json j = nlohmann::json::object();
   for (int k = 0; k < kUnmatchedKinds; ++k)
-    j[kKeys[k]] = {{"count", u.count[k]}, {"area_m2", u.area_m2[k]}};
+    j[UnmatchedKindKey(static_cast<UnmatchedKind>(k))] = {{"count", u.count[k]},
+                                                          {"area_m2", u.area_m2[k]}};
   return j;
 }
 

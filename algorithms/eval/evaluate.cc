@@ -82,8 +82,9 @@ struct SideMatch {
   std::vector<int> any_best;      // counterpart of largest IoU regardless of the rule
   std::vector<double> best_area;  // overlap with `best`
   std::vector<double> any_area;   // overlap with `any_best`
-  // For UnmatchedKind: the largest single overlap, and all overlaps summed.
-  std::vector<double> largest_area, summed_area;
+  // For UnmatchedKind: the largest single overlap, all overlaps summed, and
+  // those at the judged region's slope (normals within the angle) summed.
+  std::vector<double> largest_area, summed_area, summed_level_area;
   int tp = 0;
 };
 
@@ -99,11 +100,13 @@ SideMatch MatchSide(const std::vector<Region>& regions, const std::vector<Region
   m.any_area.assign(n, 0);
   m.largest_area.assign(n, 0);
   m.summed_area.assign(n, 0);
+  m.summed_level_area.assign(n, 0);
   std::vector<double> best_iou(n, -1), any_iou(n, -1);
   for (const Overlap& o : overlaps) {
     const int i = pick(o), j = other(o);
     m.largest_area[i] = std::max(m.largest_area[i], o.area);
     m.summed_area[i] += o.area;
+    if (o.angle_deg <= max_angle_deg) m.summed_level_area[i] += o.area;
     const double iou = o.area / std::max(regions[i].area + others[j].area - o.area, 1e-12);
     if (iou > any_iou[i]) {
       any_iou[i] = iou;
@@ -201,9 +204,11 @@ std::vector<PlaneRecord> Records(const eval::RoofPlaneSet& s, const CityModel& m
       // Overlaps are summed, so planes of the other model stacked in plan
       // (a dormer over its roof) could count twice: capped at the whole.
       const double covered = std::min(m.summed_area[i], p.plan_area);
+      const double level = std::min(m.summed_level_area[i], p.plan_area);
       r.unmatched = covered < fraction * p.plan_area              ? UnmatchedKind::kUncovered
                     : m.largest_area[i] >= fraction * p.plan_area ? UnmatchedKind::kOtherSlope
-                                                                  : UnmatchedKind::kSeveral;
+                    : level >= fraction * p.plan_area ? UnmatchedKind::kSeveralAtItsSlope
+                                                      : UnmatchedKind::kSeveral;
     }
     out.push_back(r);
   }
@@ -396,12 +401,28 @@ const char* VertexPlaceName(VertexPlace place) {
   return "?";
 }
 
+const char* UnmatchedKindKey(UnmatchedKind kind) {
+  switch (kind) {
+    case UnmatchedKind::kUncovered:
+      return "uncovered";
+    case UnmatchedKind::kOtherSlope:
+      return "other_slope";
+    case UnmatchedKind::kSeveralAtItsSlope:
+      return "several_at_its_slope";
+    case UnmatchedKind::kSeveral:
+      return "several";
+  }
+  return "?";
+}
+
 const char* UnmatchedKindName(UnmatchedKind kind, bool result_plane) {
   switch (kind) {
     case UnmatchedKind::kUncovered:
       return result_plane ? "off the reference roofs" : "not covered by the result";
     case UnmatchedKind::kOtherSlope:
       return "at another slope";
+    case UnmatchedKind::kSeveralAtItsSlope:
+      return result_plane ? "across reference planes at its slope" : "in pieces at its slope";
     case UnmatchedKind::kSeveral:
       return result_plane ? "across reference planes" : "in pieces of result planes";
   }

@@ -42,7 +42,8 @@
 //   of largest intersection-over-union (so a nested plane of the other model
 //   does not take the place of the true twin).
 // * A plane without a counterpart is told by what covers it (UnmatchedKind):
-//   not covered, covered at another slope, or covered only by several.
+//   not covered, covered at another slope, or covered only by several
+//   (at its slope or not).
 // * Geometry over matched pairs (each TP reference plane with its
 //   counterpart): normal angle
 //   median/RMS; vertex RMS = RMS of the plan distances from each vertex of
@@ -96,14 +97,22 @@ struct EvalOptions {
 //   result roof covers.
 // * kOtherSlope: one of them covers that much, but at a normal angle above
 //   max_normal_angle_deg (a wrong sweep angle, a flat roof as a shed).
-// * kSeveral: together they cover that much, none alone does. A result
-//   plane across several reference faces (two faces as one, a face run on
-//   over its neighbour); a reference plane held by fragments.
-enum class UnmatchedKind { kUncovered = 0, kOtherSlope, kSeveral };
-constexpr int kUnmatchedKinds = 3;
+// * kSeveralAtItsSlope: together they cover that much, none alone does,
+//   and those at its slope (within max_normal_angle_deg) do too. A result
+//   plane across the coplanar roofs of a terraced row, which are the planes
+//   of separate reference buildings and which no image parts (footprints
+//   do); a reference plane held by fragments.
+// * kSeveral: together they cover that much, none alone does, and not at
+//   its slope. A result plane across several faces (two faces as one, a
+//   face run on over a neighbour's); a reference plane under the pieces of
+//   planes at other slopes.
+enum class UnmatchedKind { kUncovered = 0, kOtherSlope, kSeveralAtItsSlope, kSeveral };
+constexpr int kUnmatchedKinds = 4;
 // `result_plane` picks the wording for a false result plane or a missed
 // reference plane.
 const char* UnmatchedKindName(UnmatchedKind kind, bool result_plane);
+// The kind as a JSON key: uncovered, other_slope, several_at_its_slope, several.
+const char* UnmatchedKindKey(UnmatchedKind kind);
 
 struct PlaneRecord {
   int building = -1;  // index into the model's buildings

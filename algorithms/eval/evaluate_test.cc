@@ -283,8 +283,8 @@ TEST(Evaluate, WrongNormalsDoNotMatchButFootprintsDo) {
   EXPECT_EQ(r.roof_planes.n_n_to_1, 1);
   // Each gable face lies wholly under the flat plane, which lies half over
   // each face: both sides are unmatched for their slope.
-  EXPECT_EQ(r.roof_planes.false_result.count, (std::array<int, kUnmatchedKinds>{0, 1, 0}));
-  EXPECT_EQ(r.roof_planes.missed_reference.count, (std::array<int, kUnmatchedKinds>{0, 2, 0}));
+  EXPECT_EQ(r.roof_planes.false_result.count, (std::array<int, kUnmatchedKinds>{0, 1, 0, 0}));
+  EXPECT_EQ(r.roof_planes.missed_reference.count, (std::array<int, kUnmatchedKinds>{0, 2, 0, 0}));
   EXPECT_NEAR(r.roof_planes.false_result.area_m2[1], 96, 1e-9);
 }
 
@@ -294,24 +294,34 @@ TEST(Evaluate, UnmatchedPlanesAreToldByWhatCoversThem) {
   for (int i = 0; i < 3; ++i)
     row.buildings.push_back(eval_test::Box("R" + std::to_string(i), 4.0 * i, 0, 4, 8, 0, 6));
   whole.buildings.push_back(eval_test::Box("W", 0, 0, 12, 8, 0, 6));
-  // The whole roof as a result lies across the row: each unit holds a third.
+  // The whole roof as a result lies across the row (a terraced row no
+  // image parts): each unit holds a third, all at its slope.
   const EvalResult across = Evaluate(whole, row, {});
   EXPECT_EQ(across.roof_planes.tp_reference, 3);
   EXPECT_EQ(across.roof_planes.tp_result, 0);
-  EXPECT_EQ(across.result_planes[0].unmatched, UnmatchedKind::kSeveral);
-  EXPECT_EQ(across.roof_planes.false_result.count, (std::array<int, kUnmatchedKinds>{0, 0, 1}));
+  EXPECT_EQ(across.result_planes[0].unmatched, UnmatchedKind::kSeveralAtItsSlope);
+  EXPECT_EQ(across.roof_planes.false_result.count, (std::array<int, kUnmatchedKinds>{0, 0, 1, 0}));
   EXPECT_NEAR(across.roof_planes.false_result.area_m2[2], 96, 1e-9);
   // The row as a result holds the whole reference roof in pieces.
   const EvalResult pieces = Evaluate(row, whole, {});
   EXPECT_EQ(pieces.roof_planes.tp_result, 3);
-  EXPECT_EQ(pieces.reference_planes[0].unmatched, UnmatchedKind::kSeveral);
-  EXPECT_EQ(pieces.roof_planes.missed_reference.count, (std::array<int, kUnmatchedKinds>{0, 0, 1}));
+  EXPECT_EQ(pieces.reference_planes[0].unmatched, UnmatchedKind::kSeveralAtItsSlope);
+  EXPECT_EQ(pieces.roof_planes.missed_reference.count,
+            (std::array<int, kUnmatchedKinds>{0, 0, 1, 0}));
+  // A flat roof over a hip roof: the four faces together cover it, none
+  // holds half of it, none is at its slope.
+  CityModel hip, flat;
+  hip.buildings.push_back(eval_test::Hip("H", 0, 0, 14, 10, 0, 6, 4));
+  flat.buildings.push_back(eval_test::Box("F", 0, 0, 14, 10, 0, 6));
+  const EvalResult flat_on_hip = Evaluate(flat, hip, {});
+  EXPECT_EQ(flat_on_hip.result_planes[0].unmatched, UnmatchedKind::kSeveral);
+  EXPECT_STREQ(UnmatchedKindKey(UnmatchedKind::kSeveral), "several");
   // A roof two thirds off the reference, another wholly off it.
   away.buildings.push_back(eval_test::Box("A", 8, 0, 12, 8, 0, 6));
   away.buildings.push_back(eval_test::Box("B", 40, 0, 12, 8, 0, 6));
   const EvalResult off = Evaluate(away, whole, {});
-  EXPECT_EQ(off.roof_planes.false_result.count, (std::array<int, kUnmatchedKinds>{2, 0, 0}));
-  EXPECT_EQ(off.roof_planes.missed_reference.count, (std::array<int, kUnmatchedKinds>{1, 0, 0}));
+  EXPECT_EQ(off.roof_planes.false_result.count, (std::array<int, kUnmatchedKinds>{2, 0, 0, 0}));
+  EXPECT_EQ(off.roof_planes.missed_reference.count, (std::array<int, kUnmatchedKinds>{1, 0, 0, 0}));
   const std::string table = FormatTable(off);
   EXPECT_NE(table.find("off the reference roofs"), std::string::npos);
   EXPECT_NE(table.find("not covered by the result"), std::string::npos);
@@ -319,6 +329,7 @@ TEST(Evaluate, UnmatchedPlanesAreToldByWhatCoversThem) {
   EXPECT_EQ(j["false_result"]["uncovered"]["count"], 2);
   EXPECT_NEAR(j["false_result"]["uncovered"]["area_m2"].get<double>(), 192, 1e-9);
   EXPECT_EQ(j["missed_reference"]["several"]["count"], 0);
+  EXPECT_EQ(j["missed_reference"]["several_at_its_slope"]["count"], 0);
 }
 
 TEST(Evaluate, OverAndUnderSegmentation) {

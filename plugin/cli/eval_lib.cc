@@ -158,8 +158,6 @@ EvalReport RunEval(const EvalRequest& r) {
   // (its building id): which kind of error is behind the correctness.
   nlohmann::json& false_list = report.json["false_roof_plane_list"];
   false_list = nlohmann::json::array();
-  static const char* const kUnmatchedKeys[kUnmatchedKinds] = {"uncovered", "other_slope",
-                                                              "several"};
   for (size_t i = 0; i < report.result.result_planes.size(); ++i) {
     const PlaneRecord& p = report.result.result_planes[i];
     if (p.true_positive) continue;
@@ -167,7 +165,7 @@ EvalReport RunEval(const EvalRequest& r) {
                           {"building_id", p.building_id},
                           {"plan_area_m2", p.plan_area},
                           {"slope_deg", SlopeDeg(p.normal)},
-                          {"kind", kUnmatchedKeys[static_cast<int>(p.unmatched)]},
+                          {"kind", UnmatchedKindKey(p.unmatched)},
                           {"counterpart_overlap_fraction", p.overlap_fraction},
                           {"angle_deg", p.angle_deg}});
   }
