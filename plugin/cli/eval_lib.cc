@@ -151,6 +151,7 @@ EvalReport RunEval(const EvalRequest& r) {
                       {"roof_type", RoofTypeName(b.roof_type)},
                       {"plan_area_m2", p.plan_area},
                       {"slope_deg", slope},
+                      {"kind", UnmatchedKindKey(p.unmatched)},
                       {"stage", losses.stage[i]}});
     }
   }
