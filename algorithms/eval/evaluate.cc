@@ -422,7 +422,7 @@ const char* UnmatchedKindName(UnmatchedKind kind, bool result_plane) {
     case UnmatchedKind::kOtherSlope:
       return "at another slope";
     case UnmatchedKind::kSeveralAtItsSlope:
-      return result_plane ? "across reference planes at its slope" : "in pieces at its slope";
+      return result_plane ? "across planes at its slope" : "in pieces at its slope";
     case UnmatchedKind::kSeveral:
       return result_plane ? "across reference planes" : "in pieces of result planes";
   }
