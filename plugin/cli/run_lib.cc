@@ -628,10 +628,11 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // Every completion step below proposes planes that are verified like
   // the sweep's own, then settled in the conflicts with those kept so far;
   // returns how many the verification confirmed.
-  auto add_verified = [&](std::vector<RoofPlaneHypothesis> proposals) {
+  auto add_verified = [&](std::vector<RoofPlaneHypothesis> proposals,
+                          const VerifyOptions* verify = nullptr) {
     SubProgress none(progress, 0.99, 0.99);
     const std::vector<PlaneVerification> checks =
-        VerifyPlanes(block, images, proposals, r.verify, none);
+        VerifyPlanes(block, images, proposals, verify ? *verify : r.verify, none);
     const size_t before = roof_planes.size();
     KeepVerified(std::move(proposals), checks, &roof_planes, &out.rejected, trace);
     const size_t confirmed = roof_planes.size() - before;
@@ -758,11 +759,14 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     bo.model = r.roof_models;
     bo.min_gain = r.roof_model_min_gain;
     bo.min_height_m = r.assembly.footprint_min_height_m;
+    // The faces are verified like any plane, but for the height margin.
+    VerifyOptions model_verify = r.verify;
+    model_verify.min_margin = r.roof_model_min_margin;
     int tried = 0, beyond = 0;
     std::vector<RoofPlaneHypothesis> roofs = RoofsOverBareFootprints(
         block, images, roof_planes, footprints, bo, r.verify, &tried, &beyond);
     const size_t proposed = roofs.size();
-    const size_t confirmed = add_verified(std::move(roofs));
+    const size_t confirmed = add_verified(std::move(roofs), &model_verify);
     out.stages.push_back({"roofs over bare footprints",
                           StrFormat("%d of %zu footprints without a plane, %d beyond the ridge of "
                                     "their one face: %zu faces proposed, %zu confirmed",
