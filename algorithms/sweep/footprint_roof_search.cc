@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "algorithms/buildings/footprint_completion.h"
@@ -20,12 +21,75 @@ ModelHeightSearch SearchOf(const RoofModel& m, double lo, double hi) {
   return h;
 }
 
+// Even-odd rule: footprints need not be convex.
+bool InsideOutline(const Ring2& r, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+        p.x() < r[j].x() + (p.y() - r[j].y()) * (r[i].x() - r[j].x()) / (r[i].y() - r[j].y()))
+      in = !in;
+  return in;
+}
+
+double DistanceToOutline(const Ring2& r, const Eigen::Vector2d& p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+    const Eigen::Vector2d e = r[i] - r[j];
+    const double len2 = e.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - r[j]).dot(e) / len2, 0.0, 1.0) : 0.0;
+    d = std::min(d, (r[j] + t * e - p).norm());
+  }
+  return d;
+}
+
 }  // namespace
+
+std::pair<double, double> LineHeightSpan(const Ring2& outline, const std::vector<Segment3>& lines,
+                                         double margin_m, double z_min) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::pair<double, double> span{nan, nan};
+  if (outline.size() < 3) return span;
+  auto over = [&](const Eigen::Vector3d& x) {
+    const Eigen::Vector2d q = x.head<2>();
+    return InsideOutline(outline, q) || DistanceToOutline(outline, q) <= margin_m;
+  };
+  for (const Segment3& l : lines) {
+    if (!(l.a.z() > z_min && l.b.z() > z_min) || !over(l.a) || !over(l.b)) continue;
+    const double lo = std::min(l.a.z(), l.b.z()), hi = std::max(l.a.z(), l.b.z());
+    if (!(span.first <= lo)) span.first = lo;
+    if (!(span.second >= hi)) span.second = hi;
+  }
+  return span;
+}
+
+std::vector<std::pair<double, double>> SlopedModelWindows(double flat_h, double rise, double h_min,
+                                                          double h_max,
+                                                          std::pair<double, double> line_span) {
+  std::vector<std::pair<double, double>> windows;
+  const std::pair<double, double> below_flat{std::max(h_min, flat_h - rise - 1.0), flat_h + 0.5};
+  if (below_flat.second > below_flat.first) windows.push_back(below_flat);
+  const auto [lo, hi] = line_span;
+  // Where the lines agree with the flat roof's height, more windows only
+  // give the noise more chances to win.
+  if (!std::isfinite(lo) || !(flat_h > hi + 1.0 || flat_h < lo - 1.0)) return windows;
+  // The lines lie between the eaves and the top of the roof.
+  const std::pair<double, double> by_lines{std::max(h_min, lo - rise - 0.5),
+                                           std::min(h_max, hi + 0.5)};
+  if (!(by_lines.second > by_lines.first)) return windows;
+  if (!windows.empty() && by_lines.first <= windows[0].second &&
+      windows[0].first <= by_lines.second)
+    windows[0] = {std::min(windows[0].first, by_lines.first),
+                  std::max(windows[0].second, by_lines.second)};
+  else
+    windows.push_back(by_lines);
+  return windows;
+}
 
 std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     const Block& block, const std::vector<cv::Mat>& images,
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
-    const BareFootprintRoofOptions& o, const VerifyOptions& verify, int* tried, int* beyond) {
+    const std::vector<Segment3>& lines, const BareFootprintRoofOptions& o,
+    const VerifyOptions& verify, int* tried, int* beyond) {
   // The bare footprints, then the parts beyond a ridge, each with the models
   // to try there.
   std::vector<Footprint> outlines;
@@ -70,14 +134,21 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
   std::vector<std::pair<size_t, size_t>> sloped_of;  // (footprint entry, model)
   for (size_t k = 0; k < which.size(); ++k) {
     if (!std::isfinite(z_flat[k].h)) continue;
+    const double h_min = ground_z[k] + o.min_height_m;
+    const double h_max = ground_z[k] + block.max_building_height;
+    std::pair<double, double> span{std::numeric_limits<double>::quiet_NaN(), 0.0};
+    if (o.line_heights)
+      span = LineHeightSpan(outlines[which[k].first].outline, lines, o.line_margin_m, h_min);
     for (size_t m = 1; m < which[k].second.size(); ++m) {
       double rise = 0;
       for (const RoofModelFace& face : which[k].second[m].faces)
         for (const auto& q : face.patch) rise = std::max(rise, PlaneZ(face.plane, q.x(), q.y()));
-      const double lo = std::max(ground_z[k] + o.min_height_m, z_flat[k].h - rise - 1.0);
-      if (!(z_flat[k].h + 0.5 > lo)) continue;
-      sloped.push_back(SearchOf(which[k].second[m], lo, z_flat[k].h + 0.5));
-      sloped_of.emplace_back(k, m);
+      const std::vector<std::pair<double, double>> windows =
+          SlopedModelWindows(z_flat[k].h, rise, h_min, h_max, span);
+      for (const auto& w : windows) {
+        sloped.push_back(SearchOf(which[k].second[m], w.first, w.second));
+        sloped_of.emplace_back(k, m);
+      }
     }
   }
   const std::vector<ModelHeight> z_sloped = BestModelHeights(block, images, sloped, verify);

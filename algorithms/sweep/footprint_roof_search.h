@@ -1,6 +1,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <utility>
 #include <vector>
 
 #include "algorithms/buildings/assemble_buildings.h"
@@ -8,6 +9,7 @@
 #include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/buildings/footprint_roofs.h"
 #include "algorithms/geometry/block.h"
+#include "algorithms/geometry/segment3.h"
 #include "algorithms/sweep/verify_planes.h"
 
 namespace roofsweep {
@@ -34,7 +36,32 @@ struct BareFootprintRoofOptions {
   // quality by 0.38 +- 0.14 (10 / 3), correctness -0.21 +- 0.14.
   bool beyond_ridges = true;
   BeyondRidgeOptions beyond;
+  // The sloped models are also searched at the heights of the 3D lines over
+  // the footprint (LineHeightSpan) where those contradict the flat roof's
+  // best height (SlopedModelWindows): over a steep roof no flat plane fits,
+  // and its best height can lie tens of metres off.
+  bool line_heights = true;
+  // A line counts for a footprint when both its ends lie inside it or within
+  // this of its outline (m): eaves lie on the outline.
+  double line_margin_m = 0.5;
 };
+
+// The lowest and highest z of the 3D lines over `outline` (both ends inside
+// it or within `margin_m` of it) whose ends both lie above `z_min`; NaN, NaN
+// when none.
+std::pair<double, double> LineHeightSpan(const Ring2& outline, const std::vector<Segment3>& lines,
+                                         double margin_m, double z_min);
+
+// The height windows [lo, hi] in which a sloped model's eaves are searched,
+// for a model rising `rise` m to its top, between h_min and h_max. Below the
+// flat roof's best height `flat_h` (down by the rise and 1 m, up 0.5 m);
+// and where the lines' span of heights (LineHeightSpan; NaN: none) lies more
+// than 1 m above or below flat_h, also where the lines lie between the
+// eaves and the top (padded by 0.5 m), merged with the first where the two
+// overlap.
+std::vector<std::pair<double, double>> SlopedModelWindows(double flat_h, double rise, double h_min,
+                                                          double h_max,
+                                                          std::pair<double, double> line_span);
 
 // Roof hypotheses over the footprints that no plane covers
 // (BareFootprints), and over the parts of footprints beyond the one face
@@ -42,14 +69,15 @@ struct BareFootprintRoofOptions {
 // height the views agree on best (BestModelHeights). The flat roof's height
 // is searched from min_height_m to the block's maximum building height; a
 // sloped model's eaves lie below it by at most the model's rise, which
-// bounds their search (a tenth of the cost). The best model per footprint
-// gives its faces, derived, for the caller to verify each like any plane.
-// `tried`: how many bare footprints had a ground height; `beyond`: how many
-// parts beyond a ridge. Deterministic.
+// bounds their search (a tenth of the cost); with line_heights, also at
+// the heights of the 3D lines over the footprint (`lines`, local frame)
+// where those contradict it (SlopedModelWindows). The best model per
+// footprint gives its faces, derived, for the caller to verify each like any plane. `tried`: how
+// many bare footprints had a ground height; `beyond`: how many parts beyond a ridge. Deterministic.
 std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     const Block& block, const std::vector<cv::Mat>& images,
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
-    const BareFootprintRoofOptions& options, const VerifyOptions& verify, int* tried,
-    int* beyond = nullptr);
+    const std::vector<Segment3>& lines, const BareFootprintRoofOptions& options,
+    const VerifyOptions& verify, int* tried, int* beyond = nullptr);
 
 }  // namespace roofsweep

@@ -762,9 +762,11 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     // The faces are verified like any plane, but for the height margin.
     VerifyOptions model_verify = r.verify;
     model_verify.min_margin = r.roof_model_min_margin;
+    std::vector<Segment3> segments;
+    for (const Line3D& l : matched.lines) segments.push_back(l.segment);
     int tried = 0, beyond = 0;
     std::vector<RoofPlaneHypothesis> roofs = RoofsOverBareFootprints(
-        block, images, roof_planes, footprints, bo, r.verify, &tried, &beyond);
+        block, images, roof_planes, footprints, segments, bo, r.verify, &tried, &beyond);
     const size_t proposed = roofs.size();
     const size_t confirmed = add_verified(std::move(roofs), &model_verify);
     out.stages.push_back({"roofs over bare footprints",

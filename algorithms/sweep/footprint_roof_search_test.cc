@@ -1,0 +1,109 @@
+#include "algorithms/sweep/footprint_roof_search.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "algorithms/sweep/test_scene.h"
+
+namespace roofsweep {
+namespace {
+
+using sweep_test::Quad;
+using sweep_test::TestScene;
+
+Segment3 Seg(double ax, double ay, double az, double bx, double by, double bz) {
+  Segment3 s;
+  s.a = {ax, ay, az};
+  s.b = {bx, by, bz};
+  return s;
+}
+
+TEST(LineHeightSpan, LinesOverTheOutlineAndOnItsEdge) {
+  const Ring2 square = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const std::vector<Segment3> lines = {
+      Seg(2, 2, 5, 8, 2, 7),            // inside, sloped
+      Seg(0.3, -0.3, 4, 9.7, -0.3, 4),  // an eave just outside the outline
+      Seg(20, 20, 30, 25, 20, 30),      // elsewhere
+      Seg(5, 5, 9, 30, 5, 9),           // leaves the outline
+      Seg(1, 8, 0.2, 9, 8, 0.2),        // a wall foot, below z_min
+  };
+  const auto [lo, hi] = LineHeightSpan(square, lines, 0.5, 1.0);
+  EXPECT_DOUBLE_EQ(lo, 4);
+  EXPECT_DOUBLE_EQ(hi, 7);
+  // Without the margin the eave falls outside.
+  EXPECT_DOUBLE_EQ(LineHeightSpan(square, lines, 0.1, 1.0).first, 5);
+}
+
+TEST(LineHeightSpan, NonConvexOutlineAndNoLines) {
+  // An L: the notch (6..10, 6..10) is not the building's.
+  const Ring2 l_shape = {{0, 0}, {10, 0}, {10, 6}, {6, 6}, {6, 10}, {0, 10}};
+  const std::vector<Segment3> in_notch = {Seg(7, 7, 5, 9, 9, 5)};
+  EXPECT_TRUE(std::isnan(LineHeightSpan(l_shape, in_notch, 0.5, 0).first));
+  const std::vector<Segment3> in_arm = {Seg(1, 7, 5, 5, 9, 6)};
+  EXPECT_DOUBLE_EQ(LineHeightSpan(l_shape, in_arm, 0.5, 0).second, 6);
+  EXPECT_TRUE(std::isnan(LineHeightSpan(l_shape, {}, 0.5, 0).second));
+}
+
+TEST(SlopedModelWindows, LinesSearchedOnlyWhereTheyContradictTheFlatRoof) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  using W = std::vector<std::pair<double, double>>;
+  // No lines: below the flat roof's height only.
+  EXPECT_EQ(SlopedModelWindows(10, 3, 1.5, 60, {nan, nan}), (W{{6, 10.5}}));
+  // Lines between 8 and 11 agree with a flat roof at 10.
+  EXPECT_EQ(SlopedModelWindows(10, 3, 1.5, 60, {8, 11}), (W{{6, 10.5}}));
+  // A flat roof at 40 over lines at 8-11 (no flat plane fits a steep
+  // roof): the lines' window too, eaves from 8 - 3 - 0.5 to 11 + 0.5.
+  EXPECT_EQ(SlopedModelWindows(40, 3, 1.5, 60, {8, 11}), (W{{36, 40.5}, {4.5, 11.5}}));
+  // Overlapping windows are merged; the range bounds both.
+  EXPECT_EQ(SlopedModelWindows(13, 3, 1.5, 60, {5, 11}), (W{{1.5, 13.5}}));
+  EXPECT_EQ(SlopedModelWindows(40, 3, 1.5, 10, {8, 11}), (W{{36, 40.5}, {4.5, 10}}));
+}
+
+// A gabled house, 8 x 8 m, eaves at z = 4 along y = 0 and y = 8, ridge
+// along x at y = 4, faces at 40°, over a bare footprint with its eave and
+// ridge lines: the gable model is chosen, with its eaves at their height.
+TEST(RoofsOverBareFootprints, GableAtTheHeightOfItsLines) {
+  const double rise = 4 * std::tan(40 * M_PI / 180);
+  TestScene scene;
+  Quad south, north;
+  south.origin = {-4, -4, 4};
+  south.u = {8, 0, 0};
+  south.v = {0, 4, rise};
+  south.seed = 21;
+  north.origin = {-4, 4, 4};
+  north.u = {8, 0, 0};
+  north.v = {0, -4, rise};
+  north.seed = 22;
+  north.colour = {0.45f, 0.38f, 0.33f};
+  scene.quads = {south, north};
+  Block block = sweep_test::FourViewBlock();
+  block.ground.height = 0;
+  block.max_building_height = 15;
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  Footprint fp;
+  fp.id = "house";
+  fp.outline = {{-4, -4}, {4, -4}, {4, 4}, {-4, 4}};
+  const std::vector<Segment3> lines = {Seg(-3.5, -4, 4, 3.5, -4, 4), Seg(-3.5, 4, 4, 3.5, 4, 4),
+                                       Seg(-3.5, 0, 4 + rise, 3.5, 0, 4 + rise)};
+  BareFootprintRoofOptions o;
+  o.beyond_ridges = false;
+  int tried = 0;
+  const std::vector<RoofPlaneHypothesis> roofs =
+      RoofsOverBareFootprints(block, images, {}, {fp}, lines, o, VerifyOptions(), &tried);
+  EXPECT_EQ(tried, 1);
+  ASSERT_EQ(roofs.size(), 2u);
+  for (const RoofPlaneHypothesis& r : roofs) {
+    const Eigen::Vector3d n = r.plane.head<3>().normalized();
+    EXPECT_NEAR(std::acos(std::abs(n.z())) * 180 / M_PI, 40, 0.5);
+    // z at an eave: x = 0, y = -4 or 4.
+    const double y = n.y() * r.plane[2] < 0 ? -4 : 4;  // the face rises from its eave
+    EXPECT_NEAR(-(r.plane[0] * 0 + r.plane[1] * y + r.plane[3]) / r.plane[2], 4, 0.2);
+  }
+}
+
+}  // namespace
+}  // namespace roofsweep
