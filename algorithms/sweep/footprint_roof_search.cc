@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/sweep/plane_fit.h"
 
@@ -21,7 +22,8 @@ ModelHeightSearch SearchOf(const RoofModel& m, double lo, double hi) {
   return h;
 }
 
-// Even-odd rule: footprints need not be convex.
+// Even-odd rule: footprints need not be convex (InsideConvex assumes
+// convex rings).
 bool InsideOutline(const Ring2& r, const Eigen::Vector2d& p) {
   bool in = false;
   for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
@@ -33,12 +35,8 @@ bool InsideOutline(const Ring2& r, const Eigen::Vector2d& p) {
 
 double DistanceToOutline(const Ring2& r, const Eigen::Vector2d& p) {
   double d = std::numeric_limits<double>::infinity();
-  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
-    const Eigen::Vector2d e = r[i] - r[j];
-    const double len2 = e.squaredNorm();
-    const double t = len2 > 0 ? std::clamp((p - r[j]).dot(e) / len2, 0.0, 1.0) : 0.0;
-    d = std::min(d, (r[j] + t * e - p).norm());
-  }
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    d = std::min(d, PointSegmentDistance(p, r[j], r[i]));
   return d;
 }
 
