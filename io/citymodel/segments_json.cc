@@ -35,7 +35,7 @@ std::vector<std::pair<std::string, int>> ParseObservations(const std::string& te
     if (colon == std::string::npos || colon == 0 || colon + 1 == token.size()) return {};
     char* end = nullptr;
     const long id = std::strtol(token.c_str() + colon + 1, &end, 10);
-    if (*end != '\0' || id < 0) return {};
+    if (*end != '\0' || id < -1) return {};
     out.emplace_back(token.substr(0, colon), static_cast<int>(id));
   }
   return out;

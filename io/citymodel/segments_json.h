@@ -24,14 +24,16 @@ struct LabelledSegment {
   double rms_px = std::numeric_limits<double>::quiet_NaN();
   // Where a matched line was observed: (image name, segment id) from the
   // field observations ("name:id name:id ...") of the lines3d layer
-  // `roofsweep match` writes; empty when the source has none or a token
-  // does not parse.
+  // `roofsweep match` writes, id -1 where unknown; empty when the source
+  // has none or a token does not parse.
   std::vector<std::pair<std::string, int>> observations;
 };
 
 // The field observations of the lines3d layer: "name:id name:id ...",
-// image name and segment id. Parse gives empty when any token does not
-// parse (an image name with a space cannot be told apart).
+// image name and segment id; id -1 where the segment is not known (lines
+// matched in a tile's image windows, whose segments are not those of the
+// whole image). Parse gives empty when any token does not parse (an image
+// name with a space cannot be told apart).
 std::string FormatObservations(const std::vector<std::pair<std::string, int>>& observations);
 std::vector<std::pair<std::string, int>> ParseObservations(const std::string& text);
 

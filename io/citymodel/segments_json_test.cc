@@ -32,7 +32,9 @@ TEST(ReadSegments, TheResidualOfAWrittenLineComesBack) {
   lines.push_back(lines[1]);
   lines[3].integers["views"] = 2;
   lines[0].strings["observations"] = "s01_i001:7 s02_i002:31";
-  lines[1].strings["observations"] = "name with space:3";  // cannot be told apart
+  lines[1].strings["observations"] = "name with space:3";        // cannot be told apart
+  lines[2].strings["observations"] = "s01_i001:-1 s02_i002:-2";  // -2 is no id
+  lines[3].strings["observations"] = "s01_i001:-1 s02_i002:4";   // -1: segment not known
   FeatureLayerOptions o;
   o.crs = "EPSG:25832";
   WriteFeatureLayer(path, "lines3d", LayerGeometry::kLineStringZ, lines, o);
@@ -46,6 +48,8 @@ TEST(ReadSegments, TheResidualOfAWrittenLineComesBack) {
   using Obs = std::vector<std::pair<std::string, int>>;
   EXPECT_EQ(set.segments[0].observations, (Obs{{"s01_i001", 7}, {"s02_i002", 31}}));
   EXPECT_TRUE(set.segments[1].observations.empty());
+  EXPECT_TRUE(set.segments[2].observations.empty());
+  EXPECT_EQ(set.segments[3].observations, (Obs{{"s01_i001", -1}, {"s02_i002", 4}}));
   EXPECT_EQ(FormatObservations(set.segments[0].observations), "s01_i001:7 s02_i002:31");
   // The layer's CRS is stored promoted to 3D, without a top-level code; it
   // must still read back as the block's, or run -lines cannot tell a file in

@@ -12,6 +12,7 @@ namespace {
 int Match(const std::vector<std::string>& args, Context& ctx) {
   MatchRequest r;
   MatchFlags flags;
+  std::string aoi;
   ArgParser p("match",
               "Matches straight colour edge segments across the views of a block and writes 3D "
               "lines (Scholze et al. 2000): geometric, chromatic and correlation tests, "
@@ -28,14 +29,26 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Option("-t_srs", &r.target_crs, "SRS",
               "reproject the lines from the block CRS through PROJ (ballpark height steps "
               "refused)")
+      .Option("-aoi", &aoi, "MINX,MINY,MAXX,MAXY",
+              "match one tile, in the block CRS (default: the block's aoi, if any): read only the "
+              "views and image windows that see it and its buffer, as `run -aoi` does; the "
+              "observations then name no segment (-1)")
+      .Option("-tile_buffer", &r.tile_buffer_m, "M", "match this far around the tile (default 30)")
       .Option("-truth", &r.truth, "FILE",
               "groundtruth_edges.json of `roofsweep simulate` (true-pair counts and line scores), "
               "or an Oxford VGG set folder (match precision/recall against nview-lines)");
   flags.Add(p, &r.match, &r.edges);
   p.Example("roofsweep match out/block -o lines3d.gpkg")
-      .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json");
+      .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json")
+      .Example("roofsweep match city/block.json -aoi 391800,5819000,392000,5819200 -o t.gpkg");
   if (!p.Parse(args)) return 0;
   flags.Apply(p);
+  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
+  if (!(r.tile_buffer_m >= 0))
+    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
+  if (r.aoi && !r.truth.empty())
+    throw UsageError("Options -aoi and -truth exclude each other: the truth scores a whole block",
+                     p.Synopsis());
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw UsageError("Options -a_srs and -t_srs exclude each other", p.Synopsis());
   if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());

@@ -1,7 +1,5 @@
 #include "plugin/cli/match_lib.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -16,10 +14,10 @@
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/crs_transform.h"
-#include "io/core/image_io.h"
 #include "io/core/local_frame.h"
 #include "io/orientation/block_source.h"
 #include "io/orientation/vgg_annotations.h"
+#include "plugin/cli/tile_lib.h"
 
 namespace roofsweep {
 namespace {
@@ -111,8 +109,9 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   // before the work, not after it.
   CheckFeatureLayerOutput(r.output, lo);
   auto t0 = std::chrono::steady_clock::now();
-  const BlockManifest manifest = OpenBlockManifest(r.block);
-  const Block block = ManifestToBlock(manifest);
+  BlockManifest manifest = OpenBlockManifest(r.block);
+  if (r.aoi) manifest.aoi = r.aoi;
+  Block block = ManifestToBlock(manifest);
   const LocalFrame frame = ManifestLocalFrame(manifest);
   if (!r.assign_crs.empty() && !r.target_crs.empty())
     throw Error("-a_srs and -t_srs exclude each other: -a_srs assigns a CRS without transforming");
@@ -129,9 +128,16 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
     const Eigen::Vector3d crs = frame.ToCrs(local);
     return reproject ? reproject->Forward(crs) : crs;
   };
-  std::vector<cv::Mat> images(block.views.size());
-  tbb::parallel_for(size_t{0}, images.size(),
-                    [&](size_t v) { images[v] = ReadImage(block.views[v].image_path); });
+  std::optional<TileCut> tile;
+  if (block.aoi) {
+    // The truth covers the whole block; scored against a tile's lines it
+    // would count everything outside the tile as missed.
+    if (!r.truth.empty())
+      throw Error("-truth scores a whole block: give no -aoi, and a block without an aoi");
+    if (!(r.tile_buffer_m >= 0)) throw Error("match: the tile buffer must be 0 m or more");
+    tile = CutBlockToTile(&block, r.tile_buffer_m, r.block);
+  }
+  const std::vector<cv::Mat> images = ReadBlockImages(block, tile ? &*tile : nullptr, r.block);
   out.read_s = Since(t0);
 
   std::vector<Segment3> truth_local;
@@ -147,6 +153,7 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   SubProgress sub(progress, 0.0, 0.95);
   out.result = MatchLines(block, images, r.match, r.edges, sub,
                           r.truth.empty() || vgg ? nullptr : &truth_local);
+  if (tile) out.result.messages.insert(out.result.messages.begin(), tile->message);
   if (vgg) out.annotated = ScoreAgainstVgg(*vgg, block, frame, out.result, r.truth);
   if (block.surface) out.surface = LinesOnSurfaceModel(block, out.result.lines);
 
@@ -176,8 +183,12 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
 
   t0 = std::chrono::steady_clock::now();
   std::vector<LayerFeature> features;
-  for (const Line3D& l : out.result.lines)
+  const bool windowed = tile && !tile->windows.empty();
+  for (Line3D l : out.result.lines) {
+    if (windowed)
+      for (auto& [v, id] : l.observations) id = -1;
     features.push_back(Line3DFeature(l, block, output_xyz(l.segment.a), output_xyz(l.segment.b)));
+  }
   lo.crs = !r.target_crs.empty()   ? r.target_crs
            : !r.assign_crs.empty() ? r.assign_crs
                                    : manifest.crs;

@@ -27,6 +27,12 @@ struct MatchRequest {
   // folder of an Oxford VGG set (scores the matches against its annotated
   // line correspondences, nview-lines, and the 3D lines against l3d).
   std::string truth;
+  // One tile of the block in the block CRS (min x, min y, max x, max y),
+  // replacing the manifest's aoi; as for `run`, only the views and image
+  // windows that see it and tile_buffer_m around it are read, so that a
+  // city block's manifest never loads every image.
+  std::optional<Eigen::Vector4d> aoi;
+  double tile_buffer_m = 30;
   MatchOptions match;
   EdgeOptions edges;
 };
@@ -51,7 +57,10 @@ struct MatchSummary {
 // `roofsweep match`: reads the block and its images, extracts segments,
 // matches them and writes the 3D lines as a LineStringZ layer "lines3d" in
 // the block's CRS (fields: views, rms_px, length_m, colour_left,
-// colour_right). An empty result is written as an empty layer. With
+// colour_right). An empty result is written as an empty layer. With a tile
+// (aoi), the lines of the tile and its buffer; their observations name
+// the views but no segment (-1), since the segments are those of the
+// windows, not of the whole images. With
 // target_crs the lines are reprojected from the block CRS (checked before
 // any matching work); assign_crs only relabels them.
 MatchSummary RunMatch(const MatchRequest& request, Progress& progress);

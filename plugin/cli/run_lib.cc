@@ -309,23 +309,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                   ": no footprint lies where the block's images see the ground "
                   "(a different CRS or area?)");
   }
-  long long pixels = 0;
-  if (tile) {
-    pixels = tile->pixels_read;
-  } else {
-    for (const View& v : block.views)
-      pixels += static_cast<long long>(block.CameraOf(v).width) * block.CameraOf(v).height;
-  }
-  RequireMemoryForImages(pixels, static_cast<int>(block.views.size()), r.block);
-  std::vector<cv::Mat> images(block.views.size());
-  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
-    cv::Rect window;
-    if (tile && v < tile->windows.size()) {
-      const PixelWindow& w = tile->windows[v];
-      window = cv::Rect(w.x, w.y, w.width, w.height);
-    }
-    images[v] = ReadImage(block.views[v].image_path, window);
-  });
+  const std::vector<cv::Mat> images = ReadBlockImages(block, tile ? &*tile : nullptr, r.block);
   out.stages.push_back({"read",
                         footprints.empty() ? StrFormat("%zu images", images.size())
                                            : StrFormat("%zu images, %zu footprints", images.size(),

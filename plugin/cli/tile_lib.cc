@@ -1,6 +1,7 @@
 #include "plugin/cli/tile_lib.h"
 
 #include <cpl_conv.h>
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/format.h"
+#include "io/core/image_io.h"
 
 namespace roofsweep {
 namespace {
@@ -93,6 +95,29 @@ std::vector<Eigen::Vector4d> TileGrid(const std::vector<ViewFootprint>& footprin
       if (covering >= 2) tiles.emplace_back(i * size, j * size, (i + 1) * size, (j + 1) * size);
     }
   return tiles;
+}
+
+std::vector<cv::Mat> ReadBlockImages(const Block& block, const TileCut* tile,
+                                     const std::string& source) {
+  const bool windowed = tile && !tile->windows.empty();
+  long long pixels = 0;
+  if (tile) {
+    pixels = tile->pixels_read;
+  } else {
+    for (const View& v : block.views)
+      pixels += static_cast<long long>(block.CameraOf(v).width) * block.CameraOf(v).height;
+  }
+  RequireMemoryForImages(pixels, static_cast<int>(block.views.size()), source);
+  std::vector<cv::Mat> images(block.views.size());
+  tbb::parallel_for(size_t{0}, images.size(), [&](size_t v) {
+    cv::Rect window;
+    if (windowed && v < tile->windows.size()) {
+      const PixelWindow& w = tile->windows[v];
+      window = cv::Rect(w.x, w.y, w.width, w.height);
+    }
+    images[v] = ReadImage(block.views[v].image_path, window);
+  });
+  return images;
 }
 
 std::string TileTag(const Eigen::Vector4d& aoi) {

@@ -6,6 +6,7 @@
 // together hold every building once.
 
 #include <Eigen/Core>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,12 @@ std::vector<std::string> KeepTileBuildings(const Eigen::Vector4d& aoi, const Loc
 // configuration option ROOFSWEEP_MAX_MEMORY (GB) when set. The error names
 // -aoi: a tiled run reads only what sees its tile.
 void RequireMemoryForImages(long long pixels, int views, const std::string& source);
+
+// The images of `block`'s views, in parallel: with `tile` (its cut, or
+// null) only the window of each image that sees the tile, and refused
+// before any is read when they would not fit in memory.
+std::vector<cv::Mat> ReadBlockImages(const Block& block, const TileCut* tile,
+                                     const std::string& source);
 
 // The tiles of a grid of `size` (block CRS units, aligned to multiples of
 // it, so that the grids of neighbouring blocks meet) that at least two

@@ -429,6 +429,31 @@ import re, sys
 m = re.search(r"^tile: \d+ of 4 views .*; ([0-9.]+) of ([0-9.]+) megapixels read", open(sys.argv[1]).read(), re.M)
 assert m and float(m.group(1)) < 0.5 * float(m.group(2)), m and m.groups()
 PY
+  # match reads the same windows for a tile, and its lines feed run on it.
+  local small
+  small=$(python3 -c "print(f'{$bx-3},{$by-3},{$bx+3},{$by+3}')")
+  expect_ok tile_match match "$SIM" -aoi "$small" -tile_buffer 5 -o "$WORK/small_lines.gpkg" || return
+  grep -Eq "^tile: [0-9]+ of 4 views see it and its 5 m buffer" "$WORK/stdout.txt" \
+    && pass tile_match_message || fail tile_match_message "$(head -3 "$WORK/stdout.txt")"
+  ogrinfo -ro -al -q "$WORK/small_lines.gpkg" lines3d >"$WORK/small_lines.txt" 2>&1
+  python3 - "$WORK/small_lines.txt" "$small" <<'PY' && pass tile_match_lines || fail tile_match_lines "$(head -c 600 "$WORK/small_lines.txt")"
+import re, sys
+text, box = open(sys.argv[1]).read(), [float(v) for v in sys.argv[2].split(",")]
+obs = re.findall(r"observations \(String\) = (.*)", text)
+assert obs, "no lines in the tile"
+# Segment ids of the windows name nothing in the whole images.
+assert all(t.endswith(":-1") for o in obs for t in o.split()), obs[:3]
+# The lines lie in the tile and its buffer (5 m), give or take the windows'
+# margin and a line's run past the region's edge.
+points = re.findall(r"([0-9.]+) ([0-9.]+) [0-9.]+", " ".join(re.findall(r"LINESTRING Z \(([^)]*)\)", text)))
+assert len(points) == 2 * len(obs), (len(points), len(obs))
+for x, y in points:
+    assert box[0] - 15 < float(x) < box[2] + 15 and box[1] - 15 < float(y) < box[3] + 15, (x, y, box)
+PY
+  expect_ok tile_match_run run "$SIM" -aoi "$small" -tile_buffer 5 -lines "$WORK/small_lines.gpkg" \
+    -o "$WORK/small_from_lines.gml" -q
+  expect_fail tile_match_truth "$WORK/t.gpkg" "-aoi and -truth" -- match "$SIM" -aoi "$small" \
+    -truth "$SIM/groundtruth_edges.json" -o "$WORK/t.gpkg"
   # A tile the images do not see, and a malformed one.
   expect_fail tile_unseen "$WORK/far.gml" "no image sees the tile" -- run "$SIM" \
     -aoi "$(python3 -c "print($split + 1e5)"),$y0,$(python3 -c "print($split + 1e5 + 10)"),$y1" -o "$WORK/far.gml"

@@ -328,6 +328,19 @@ def test_lines_and_match_on_tiny_block(tiny_block, tmp_path, roofsweep_exe):
     assert _horizontal_epsg(lyr.crs()) == ("EPSG", "25832")
     assert fb.progress_values and fb.progress_values[-1] == 100
     assert any("3D lines" in c for c in fb.console), fb.console
+    # A tile (the western half of the lines, in the block's CRS): only what
+    # the images see of it and 30 m around it is matched.
+    box = lyr.extent()
+    tile = "{},{},{},{} [EPSG:25832]".format(box.xMinimum(), box.center().x(), box.yMinimum(), box.yMaximum())
+    l3_tile = str(tmp_path / "lines3d_tile.gpkg")
+    fb = RecordingFeedback()
+    tiled = processing.run("roofsweep:match", {"BLOCK": res["BLOCK"], "OUTPUT": l3_tile, "EXTENT": tile},
+                           feedback=fb)
+    assert any(c.startswith("tile: ") for c in fb.console), fb.console
+    part = QgsVectorLayer(tiled["LAYERS"][0], "tile", "ogr")
+    assert part.isValid() and part.featureCount() > 0
+    assert part.extent().xMinimum() > box.xMinimum() - 60 and part.extent().xMaximum() < box.center().x() + 60
+    assert all(o.endswith(":-1") for f in part.getFeatures() for o in f["observations"].split())
 
 
 def test_unavailable_subcommand_fails_clearly(tmp_path, tiny_block):

@@ -1,5 +1,6 @@
 """Shared plumbing of the roofsweep Processing algorithms."""
 
+import json
 import os
 
 from qgis.core import (QgsCoordinateReferenceSystem, QgsProcessingAlgorithm, QgsProcessingContext,
@@ -75,6 +76,16 @@ class RoofsweepAlgorithm(QgsProcessingAlgorithm):
         if crs.authid():
             return crs.authid()
         return crs.toWkt(QgsCoordinateReferenceSystem.WKT_PREFERRED)
+
+    def aoi_arguments(self, parameters, name, block, context):
+        """-aoi for an extent parameter, in the block's CRS (roofsweep takes the tile in it)."""
+        if not self.given(parameters, name):
+            return []
+        with open(block) as f:
+            crs = QgsCoordinateReferenceSystem(json.load(f).get("crs") or "")
+        rect = self.parameterAsExtent(parameters, name, context, crs if crs.isValid() else None)
+        return ["-aoi", ",".join(repr(v) for v in (rect.xMinimum(), rect.yMinimum(),
+                                                    rect.xMaximum(), rect.yMaximum()))]
 
     @staticmethod
     def existing_file(path, what):

@@ -1,7 +1,7 @@
 """Reconstruct 3D lines: roofsweep match."""
 
-from qgis.core import (QgsProcessingOutputMultipleLayers, QgsProcessingParameterFile,
-                       QgsProcessingParameterFileDestination)
+from qgis.core import (QgsProcessingOutputMultipleLayers, QgsProcessingParameterExtent,
+                       QgsProcessingParameterFile, QgsProcessingParameterFileDestination)
 
 from .base import LINES_LAYERS, RoofsweepAlgorithm
 
@@ -13,12 +13,15 @@ class MatchAlgorithm(RoofsweepAlgorithm):
     HELP = ("Matches straight colour edge segments across the views of a block into 3D lines (Scholze 2000: "
             "geometric, chromatic and correlation tests, multi-view verification, least-squares lines) and "
             "writes a LineStringZ layer lines3d, which is added to the project. With the ground-truth edges "
-            "of a simulation the log also reports true-pair counts and line scores.")
-    USES_OPTIONS = ("-o", "-truth", "-overwrite")
+            "of a simulation the log also reports true-pair counts and line scores. With a tile extent, "
+            "only the images and image windows that see it (and 30 m around it) are read, as for the "
+            "reconstruction; the ground truth then cannot be given.")
+    USES_OPTIONS = ("-o", "-truth", "-aoi", "-overwrite")
 
     BLOCK = "BLOCK"
     TRUTH = "TRUTH"
     OUTPUT = "OUTPUT"
+    EXTENT = "EXTENT"
     LAYERS = "LAYERS"
 
     def initAlgorithm(self, config=None):
@@ -27,6 +30,8 @@ class MatchAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterFile(
             self.TRUTH, self.tr("Ground-truth edges of a simulation (groundtruth_edges.json)"), optional=True,
             fileFilter="JSON (*.json)"))
+        self.addParameter(QgsProcessingParameterExtent(
+            self.EXTENT, self.tr("Tile: match only what the images see of this extent"), optional=True))
         self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("3D lines"),
                                                                 fileFilter="GeoPackage (*.gpkg)"))
         self.addOutput(QgsProcessingOutputMultipleLayers(self.LAYERS, self.tr("Loaded layers")))
@@ -38,6 +43,7 @@ class MatchAlgorithm(RoofsweepAlgorithm):
         if self.given(parameters, self.TRUTH):
             args += ["-truth", self.existing_file(self.parameterAsFile(parameters, self.TRUTH, context),
                                                   "Ground-truth edges")]
+        args += self.aoi_arguments(parameters, self.EXTENT, block, context)
         args += ["-overwrite", "-o", out]
         self.run_program(args, feedback)
         layers = []

@@ -1,8 +1,6 @@
 """Reconstruct LoD2 buildings: roofsweep run (the whole pipeline)."""
 
-import json
-
-from qgis.core import (QgsCoordinateReferenceSystem, QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
+from qgis.core import (QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
                        QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
                        QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
                        QgsProcessingParameterExtent, QgsProcessingParameterNumber)
@@ -83,13 +81,7 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             fields = self.parameterAsFields(parameters, self.FOOTPRINT_ID, context)
             if fields:
                 args += ["-footprints_id", fields[0]]
-        if self.given(parameters, self.EXTENT):
-            # roofsweep takes the tile in the block's CRS.
-            with open(block) as f:
-                crs = QgsCoordinateReferenceSystem(json.load(f).get("crs") or "")
-            rect = self.parameterAsExtent(parameters, self.EXTENT, context, crs if crs.isValid() else None)
-            args += ["-aoi", ",".join(repr(v) for v in (rect.xMinimum(), rect.yMinimum(),
-                                                         rect.xMaximum(), rect.yMaximum()))]
+        args += self.aoi_arguments(parameters, self.EXTENT, block, context)
         self.run_program(args, feedback)
         layers = []
         if out.lower().endswith(".gpkg"):
