@@ -184,11 +184,9 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   t0 = std::chrono::steady_clock::now();
   std::vector<LayerFeature> features;
   const bool windowed = tile && !tile->windows.empty();
-  for (Line3D l : out.result.lines) {
-    if (windowed)
-      for (auto& [v, id] : l.observations) id = -1;
-    features.push_back(Line3DFeature(l, block, output_xyz(l.segment.a), output_xyz(l.segment.b)));
-  }
+  for (const Line3D& l : out.result.lines)
+    features.push_back(
+        Line3DFeature(l, block, output_xyz(l.segment.a), output_xyz(l.segment.b), !windowed));
   lo.crs = !r.target_crs.empty()   ? r.target_crs
            : !r.assign_crs.empty() ? r.assign_crs
                                    : manifest.crs;
@@ -199,7 +197,7 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
 }
 
 LayerFeature Line3DFeature(const Line3D& l, const Block& block, const Eigen::Vector3d& a,
-                           const Eigen::Vector3d& b) {
+                           const Eigen::Vector3d& b, bool whole_images) {
   LayerFeature f;
   f.lines.push_back({a, b});
   f.integers["views"] = l.Views();
@@ -209,7 +207,8 @@ LayerFeature Line3DFeature(const Line3D& l, const Block& block, const Eigen::Vec
   f.strings["colour_left"] = Hex(l.colour_left);
   f.strings["colour_right"] = Hex(l.colour_right);
   std::vector<std::pair<std::string, int>> observations;
-  for (const auto& [v, s] : l.observations) observations.emplace_back(block.views[v].name, s);
+  for (const auto& [v, s] : l.observations)
+    observations.emplace_back(block.views[v].name, whole_images ? s : -1);
   f.strings["observations"] = FormatObservations(observations);
   return f;
 }

@@ -77,7 +77,9 @@ std::string FormatSurfaceAgreement(const eval::SurfaceAgreement& agreement);
 // the line from a to b (output coordinates) with views, rms_px, length_m,
 // depth_from, the two sides' colours and the observations by image name,
 // which `run -lines` reads back to restrict each line's reference views.
+// Without whole_images (the segments were those of a tile's windows) the
+// observations name no segment (id -1).
 LayerFeature Line3DFeature(const Line3D& line, const Block& block, const Eigen::Vector3d& a,
-                           const Eigen::Vector3d& b);
+                           const Eigen::Vector3d& b, bool whole_images);
 
 }  // namespace roofsweep

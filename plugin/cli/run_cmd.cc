@@ -155,6 +155,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
 int Sweep(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   r.stop_after_sweep = true;
+  std::string aoi;
   ArgParser p("sweep",
               "Runs the pipeline up to the half-plane sweep (Baillard & Zisserman 2000, section 3) "
               "and writes every swept line side as a polygon on its best plane, with the angle, "
@@ -166,12 +167,19 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-overwrite", &r.overwrite, "replace existing output files")
       .Option("-lines3d", &r.lines3d, "FILE",
               "also write the 3D lines (layer lines3d, as match writes it; -lines reads it back)")
-      .Option("-report", &r.report, "FILE", "JSON report with the stage table");
+      .Option("-report", &r.report, "FILE", "JSON report with the stage table")
+      .Option("-aoi", &aoi, "MINX,MINY,MAXX,MAXY",
+              "sweep one tile, in the block CRS (default: the block's aoi, if any): read only the "
+              "views and image windows that see it and its buffer, as `run -aoi` does")
+      .Option("-tile_buffer", &r.tile_buffer_m, "M", "sweep this far around the tile (default 30)");
   MatchFlags flags;
   AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep sweep out/block -o half_planes.gpkg");
   if (!p.Parse(args)) return 0;
   flags.Apply(p);
+  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
+  if (!(r.tile_buffer_m >= 0))
+    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);

@@ -371,9 +371,10 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<LayerFeature> features;
     // As `match` writes them, so that `run -lines` on this layer sweeps
     // the same lines with the same reference views.
+    const bool whole_images = !tile || tile->windows.empty();
     for (const Line3D& l : matched.lines)
-      features.push_back(
-          Line3DFeature(l, block, frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b)));
+      features.push_back(Line3DFeature(l, block, frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b),
+                                       whole_images));
     FeatureLayerOptions lo;
     lo.crs = manifest.crs;
     lo.overwrite = r.overwrite;

@@ -452,6 +452,14 @@ for x, y in points:
 PY
   expect_ok tile_match_run run "$SIM" -aoi "$small" -tile_buffer 5 -lines "$WORK/small_lines.gpkg" \
     -o "$WORK/small_from_lines.gml" -q
+  # sweep takes the tile too, and the lines it writes name no segment either.
+  expect_ok tile_sweep sweep "$SIM" -aoi "$small" -tile_buffer 5 -o "$WORK/small_hp.gpkg" \
+    -lines3d "$WORK/small_sweep_lines.gpkg" || return
+  grep -Eq "^tile: [0-9]+ of 4 views see it and its 5 m buffer" "$WORK/stdout.txt" \
+    && pass tile_sweep_message || fail tile_sweep_message "$(head -3 "$WORK/stdout.txt")"
+  ogrinfo -ro -al -q "$WORK/small_sweep_lines.gpkg" lines3d | grep "observations (String)" >"$WORK/obs.txt"
+  [[ -s "$WORK/obs.txt" ]] && ! grep -Eq ":([0-9]|-[02-9])" "$WORK/obs.txt" \
+    && pass tile_sweep_lines || fail tile_sweep_lines "$(head -3 "$WORK/obs.txt")"
   expect_fail tile_match_truth "$WORK/t.gpkg" "-aoi and -truth" -- match "$SIM" -aoi "$small" \
     -truth "$SIM/groundtruth_edges.json" -o "$WORK/t.gpkg"
   # A tile the images do not see, and a malformed one.
