@@ -482,8 +482,8 @@ test_run_refuses_bad_input() {
     -- run "$SIM" -o "$WORK/m.gml" --config ROOFSWEEP_MAX_MEMORY 0.1
   expect_ok run_memory_enough run "$SIM" -o "$WORK/m.gml" -q --config ROOFSWEEP_MAX_MEMORY 1
   # match reads the same images and gives the same advice.
-  expect_fail match_memory "$WORK/m.gpkg" "megapixels, which need about .* GB; ROOFSWEEP_MAX_MEMORY allows 0.1 GB.*-aoi" \
-    -- match "$SIM" -o "$WORK/m.gpkg" --config ROOFSWEEP_MAX_MEMORY 0.1
+  expect_fail match_memory "$WORK/match_memory.gpkg" "megapixels, which need about .* GB; ROOFSWEEP_MAX_MEMORY allows 0.1 GB.*-aoi" \
+    -- match "$SIM" -o "$WORK/match_memory.gpkg" --config ROOFSWEEP_MAX_MEMORY 0.1
 }
 
 run_tests
