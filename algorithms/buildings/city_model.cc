@@ -58,6 +58,17 @@ const char* RoofTypeName(int code) {
 }
 
 namespace {
+bool RingContainsXY(const std::vector<Eigen::Vector3d>& ring, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Eigen::Vector3d &a = ring[i], &b = ring[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+
 Eigen::Vector3d NewellSum(const std::vector<Eigen::Vector3d>& ring) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   const size_t m = ring.size();
@@ -77,6 +88,13 @@ double Polygon3::Area() const {
   double a = 0.5 * n.dot(NewellSum(exterior));
   for (const auto& h : holes) a -= std::abs(0.5 * n.dot(NewellSum(h)));
   return a;
+}
+
+bool Polygon3::ContainsXY(const Eigen::Vector2d& p) const {
+  if (exterior.empty() || !RingContainsXY(exterior, p)) return false;
+  for (const auto& h : holes)
+    if (!h.empty() && RingContainsXY(h, p)) return false;
+  return true;
 }
 
 double Building::GroundZ() const {

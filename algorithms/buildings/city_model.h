@@ -27,6 +27,9 @@ struct Polygon3 {
   Eigen::Vector3d Normal() const;
   // Area of the polygon (exterior minus holes), m².
   double Area() const;
+  // Whether the plan point lies inside the polygon seen from above
+  // (exterior minus holes; even-odd rule, so either ring orientation).
+  bool ContainsXY(const Eigen::Vector2d& p) const;
 };
 
 struct Surface {

@@ -14,6 +14,17 @@ TEST(Polygon3, NormalAndAreaOfCounterClockwiseSquare) {
   EXPECT_NEAR(p.Area(), 11.0, 1e-12);
 }
 
+TEST(Polygon3, ContainsXYLeavesOutHolesAndIgnoresHeight) {
+  Polygon3 p;
+  p.exterior = {{0, 0, 5}, {4, 0, 7}, {4, 3, 7}, {0, 3, 5}};  // a sloped face
+  p.holes.push_back({{1, 1, 6}, {1, 2, 6}, {2, 2, 6}, {2, 1, 6}});
+  EXPECT_TRUE(p.ContainsXY({0.5, 0.5}));
+  EXPECT_TRUE(p.ContainsXY({3, 2.5}));
+  EXPECT_FALSE(p.ContainsXY({1.5, 1.5}));  // in the hole
+  EXPECT_FALSE(p.ContainsXY({5, 1}));
+  EXPECT_FALSE(Polygon3{}.ContainsXY({0, 0}));
+}
+
 TEST(Building, GroundAndRoofHeights) {
   Building b;
   Surface g{SurfaceType::kGround, "", {}};

@@ -152,6 +152,8 @@ std::string FormatTable(const EvalResult& r) {
     t.Row("precision", Pct(l.precision),
           Fmt(l.raw.result_on_reference_m, "%.1f") + " of " + Fmt(l.raw.result_length_m, "%.1f m") +
               ", " + std::to_string(l.raw.segments) + " segments");
+    if (l.on_clutter)
+      t.Row("  of it on clutter", Pct(l.on_clutter), "cars, chimneys, solar panels");
     t.Row("on a surface, no edge", Pct(l.on_surface),
           r.options.lines.ground.Known() ? "texture, shadows (roofs, walls, terrain)"
                                          : "texture, shadows (roofs, walls)");
@@ -234,6 +236,7 @@ nlohmann::json ToJson(const EvalResult& r) {
                   {"precision", Num(l.precision)},
                   {"completeness", Num(l.completeness)},
                   {"roof_edge_completeness", Num(l.roof_edge_completeness)},
+                  {"on_clutter", Num(l.on_clutter)},
                   {"on_surface", Num(l.on_surface)},
                   {"off_surface", Num(l.off_surface)},
                   {"segments", l.raw.segments},

@@ -431,7 +431,8 @@ const char* UnmatchedKindName(UnmatchedKind kind, bool result_plane) {
 
 EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
                     const std::vector<Segment3>* lines,
-                    const std::vector<Segment3>* extra_reference_segments) {
+                    const std::vector<Segment3>* extra_reference_segments,
+                    const std::vector<Segment3>* clutter_segments) {
   auto has_parts = [](const CityModel& m) {
     return std::any_of(m.buildings.begin(), m.buildings.end(),
                        [](const Building& b) { return !b.parts.empty(); });
@@ -503,7 +504,8 @@ EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalO
         surfaces.insert(surfaces.end(), sf.polygons.begin(), sf.polygons.end());
     l.raw = eval::EvaluateLines(*lines, edges,
                                 extra_reference_segments ? *extra_reference_segments : kNone,
-                                options.lines, &surfaces);
+                                options.lines, &surfaces, clutter_segments);
+    if (clutter_segments) l.on_clutter = Ratio(l.raw.result_on_clutter_m, l.raw.result_length_m);
     l.on_surface = Ratio(l.raw.result_on_surface_m, l.raw.result_length_m);
     l.off_surface =
         Ratio(l.raw.result_length_m - l.raw.result_on_reference_m - l.raw.result_on_surface_m,

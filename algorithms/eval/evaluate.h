@@ -184,6 +184,9 @@ struct Lines3dScores {
   // Share of the result length on a true surface but no edge (see
   // LineScores::result_on_surface_m), and off every surface.
   std::optional<double> on_surface, off_surface;
+  // Share on the edges of clutter (part of the precision; see
+  // LineScores::result_on_clutter_m), when clutter edges were given.
+  std::optional<double> on_clutter;
 };
 
 // Roof polygons each model had to leave out (see RoofPlaneSet).
@@ -214,12 +217,16 @@ struct EvalResult {
 
 // `lines`: reconstructed 3D segments (optional). `extra_reference_segments`:
 // reference segments besides the roof edges, e.g. ground markings (optional).
+// `clutter_segments`: true edges of objects outside the model, which the
+// lines' precision counts and their completeness does not (optional; see
+// eval::EvaluateLines).
 // A building made of parts counts as one building, its parts' surfaces
 // together (MergeBuildingParts): the reference models buildings so, and a
 // footprint's building is one cadastral object however many solids it has.
 // Throws roofsweep::Error for options out of range.
 EvalResult Evaluate(const CityModel& result, const CityModel& truth, const EvalOptions& options,
                     const std::vector<Segment3>* lines = nullptr,
-                    const std::vector<Segment3>* extra_reference_segments = nullptr);
+                    const std::vector<Segment3>* extra_reference_segments = nullptr,
+                    const std::vector<Segment3>* clutter_segments = nullptr);
 
 }  // namespace roofsweep

@@ -211,7 +211,8 @@ std::vector<Segment3> RoofEdges(const CityModel& model, const LineEvalOptions& o
 LineScores EvaluateLines(const std::vector<Segment3>& result,
                          const std::vector<Segment3>& roof_edges,
                          const std::vector<Segment3>& extra_reference,
-                         const LineEvalOptions& options, const std::vector<Polygon3>* surfaces) {
+                         const LineEvalOptions& options, const std::vector<Polygon3>* surfaces,
+                         const std::vector<Segment3>* clutter) {
   if (!(options.distance_m >= 0) || !(options.sample_step_m > 0))
     throw Error("3D line evaluation: distance must be >= 0 and sample step > 0");
   const double cos_angle = std::cos(options.angle_deg * M_PI / 180.0);
@@ -226,17 +227,24 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
   for (const auto& l : extra_reference) ref.push_back(&l);
   const SegmentGrid res_grid(res, options.distance_m, cell);
   const SegmentGrid ref_grid(ref, options.distance_m, cell);
+  std::vector<const Segment3*> clutter_lines;
+  if (clutter)
+    for (const auto& l : *clutter) clutter_lines.push_back(&l);
+  const SegmentGrid clutter_grid(clutter_lines, options.distance_m, cell);
   const bool with_surfaces = surfaces != nullptr || options.ground.Known();
   static const std::vector<Polygon3> kNone;
   const PolygonGrid surface_grid(surfaces ? *surfaces : kNone, options.distance_m, cell);
   for (const auto& l : result) {
     const double len = l.Length();
     s.result_length_m += len;
-    int on_edge = 0, on_surface = 0;
+    int on_edge = 0, on_clutter = 0, on_surface = 0;
     const int n = ForEachSample(
         l, options.sample_step_m, [&](const Eigen::Vector3d& p, const Eigen::Vector3d& dir) {
           if (ref_grid.Near(p, dir, options.distance_m, cos_angle)) {
             ++on_edge;
+          } else if (!clutter_lines.empty() &&
+                     clutter_grid.Near(p, dir, options.distance_m, cos_angle)) {
+            ++on_clutter;
           } else if (with_surfaces && (std::abs(p.z() - options.ground.HeightAt(p.x(), p.y())) <=
                                            options.distance_m ||
                                        surface_grid.Near(p, options.distance_m))) {
@@ -244,7 +252,8 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
           }
         });
     if (n == 0) continue;
-    s.result_on_reference_m += len * on_edge / n;
+    s.result_on_reference_m += len * (on_edge + on_clutter) / n;
+    s.result_on_clutter_m += len * on_clutter / n;
     s.result_on_surface_m += len * on_surface / n;
   }
   for (const auto& l : roof_edges) {

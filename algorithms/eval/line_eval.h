@@ -49,16 +49,24 @@ struct LineScores {
   // no edge of the model), as against lines off every surface (mismatches,
   // trees). Zero when no surfaces were given.
   double result_on_surface_m = 0;
+  // Result length on a clutter segment and on no reference segment (part of
+  // result_on_reference_m).
+  double result_on_clutter_m = 0;
 };
 
 // Length-based comparison. precision = result_on_reference_m / result_length_m,
 // completeness = reference_covered_m / reference_length_m,
 // roof_edge_completeness = roof_edge_covered_m / roof_edge_length_m.
 // `surfaces`: the reference's polygons (roofs, walls, ground), optional.
+// `clutter`: true edges of objects that are not part of the model (a
+// simulated scene's cars, chimneys, solar panels), optional: a result line
+// on one is correct, but the clutter is not there to be completed, so it
+// counts towards precision only.
 LineScores EvaluateLines(const std::vector<Segment3>& result,
                          const std::vector<Segment3>& roof_edges,
                          const std::vector<Segment3>& extra_reference,
                          const LineEvalOptions& options,
-                         const std::vector<Polygon3>* surfaces = nullptr);
+                         const std::vector<Polygon3>* surfaces = nullptr,
+                         const std::vector<Segment3>* clutter = nullptr);
 
 }  // namespace roofsweep::eval

@@ -145,5 +145,25 @@ TEST(EvaluateLines, ExtraReferenceSegmentsCountInCompletenessOnly) {
   EXPECT_NEAR(t.reference_covered_m / t.reference_length_m, 1.0, 1e-12);
 }
 
+TEST(EvaluateLines, ClutterCountsInPrecisionOnly) {
+  CityModel box;
+  box.buildings.push_back(eval_test::Box("B", 0, 0, 10, 8, 0, 5));
+  const auto edges = RoofEdges(box, {});
+  // A car's roof edge beside the house, and a line 1 m above it.
+  const std::vector<Segment3> car = {{V(14, 0, 1.5), V(18, 0, 1.5)}};
+  std::vector<Segment3> lines = edges;
+  lines.push_back(car[0]);
+  lines.push_back({V(14, 0, 2.5), V(18, 0, 2.5)});
+  const LineScores without = EvaluateLines(lines, edges, {}, {});
+  const LineScores with = EvaluateLines(lines, edges, {}, {}, nullptr, &car);
+  EXPECT_NEAR(without.result_on_reference_m, 36, 1e-9);
+  EXPECT_NEAR(with.result_on_reference_m, 40, 1e-9);
+  EXPECT_NEAR(with.result_on_clutter_m, 4, 1e-9);
+  EXPECT_NEAR(with.result_length_m, 44, 1e-9);
+  // The car's edge is not there to be completed.
+  EXPECT_NEAR(with.reference_length_m, without.reference_length_m, 1e-12);
+  EXPECT_NEAR(with.reference_covered_m, without.reference_covered_m, 1e-12);
+}
+
 }  // namespace
 }  // namespace roofsweep::eval

@@ -9,6 +9,7 @@
 #include "algorithms/core/error.h"
 #include "algorithms/simulate/ground_index.h"
 #include "algorithms/simulate/procedural_buildings.h"
+#include "algorithms/simulate/prop_edges.h"
 #include "algorithms/simulate/random.h"
 
 namespace roofsweep {
@@ -1204,6 +1205,7 @@ SceneTruth TruthOf(const Scene& scene) {
       if (run_start >= 0) flush(run_start, len);
     }
   }
+  for (TrueEdge& e : PropEdges(scene, t.roof_planes)) t.edges.push_back(e);
   return t;
 }
 

@@ -176,8 +176,9 @@ Scene GenerateScene(const SceneOptions& options, uint64_t seed);
 // slope is refused (the model's own ground heights would not follow it).
 Scene SceneFromCityModel(const CityModel& city, const SceneOptions& options, uint64_t seed);
 
-// Buildings, their classified edges, roof planes and the ground markings
-// (borders between ground materials, as 3D segments).
+// Buildings, their classified edges, roof planes, the ground markings
+// (borders between ground materials, as 3D segments) and the props' edges
+// in the open air (PropEdges).
 SceneTruth TruthOf(const Scene& scene);
 
 }  // namespace sim

@@ -36,8 +36,16 @@ const char* EdgeKindName(EdgeKind k) {
       return "footprint";
     case EdgeKind::kGroundMarking:
       return "ground_marking";
+    case EdgeKind::kProp:
+      return "prop";
   }
   return "?";
+}
+
+std::optional<EdgeKind> EdgeKindFromName(const std::string& name) {
+  for (int k = 0; k <= static_cast<int>(EdgeKind::kProp); ++k)
+    if (name == EdgeKindName(static_cast<EdgeKind>(k))) return static_cast<EdgeKind>(k);
+  return std::nullopt;
 }
 
 bool IsRoofEdge(EdgeKind k) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,15 +26,19 @@ enum class EdgeKind {
   kWallCorner,     // wall-wall
   kFootprint,      // wall-ground
   kGroundMarking,  // painted line border or pavement edge on the terrain
+  kProp,           // edge of a car, hedge, chimney, solar panel, ... in the open air (not LoD2)
 };
 const char* EdgeKindName(EdgeKind k);
+// The kind of an EdgeKindName (as groundtruth_edges.json holds it); nullopt
+// for any other name.
+std::optional<EdgeKind> EdgeKindFromName(const std::string& name);
 // Edges on the roof outline or inside a roof (everything up to kRoofOther).
 bool IsRoofEdge(EdgeKind k);
 
 struct TrueEdge {
   Eigen::Vector3d a, b;
   EdgeKind kind = EdgeKind::kRoofOther;
-  int building = -1;  // index into CityModel::buildings; -1 for ground markings
+  int building = -1;  // index into CityModel::buildings; -1 for ground markings and props
 };
 
 // A roof face: plane n·X + d = 0 with unit n pointing up/out.
@@ -54,7 +59,7 @@ std::vector<RoofPlane> ExtractRoofPlanes(const CityModel& city);
 // Ground truth of a simulated scene, in the local ENU frame.
 struct SceneTruth {
   CityModel city;
-  std::vector<TrueEdge> edges;  // building edges, then ground markings
+  std::vector<TrueEdge> edges;  // building edges, then ground markings, then props
   std::vector<RoofPlane> roof_planes;
 };
 

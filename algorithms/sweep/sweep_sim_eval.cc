@@ -27,24 +27,6 @@ using namespace roofsweep;
 
 namespace {
 
-bool InsideXY(const std::vector<Eigen::Vector3d>& ring, const Eigen::Vector3d& p) {
-  bool in = false;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const auto &a = ring[i], &b = ring[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-      in = !in;
-  }
-  return in;
-}
-
-bool InsidePolygonXY(const Polygon3& poly, const Eigen::Vector3d& p) {
-  if (!InsideXY(poly.exterior, p)) return false;
-  for (const auto& h : poly.holes)
-    if (InsideXY(h, p)) return false;
-  return true;
-}
-
 double Percentile(std::vector<double> v, double q) {
   if (v.empty()) return NAN;
   std::sort(v.begin(), v.end());
@@ -193,7 +175,7 @@ int main(int argc, char** argv) {
         continue;
       const double theta = family->AngleOfNormal(n);
       const Eigen::Vector3d p = family->line().At(0.5) + 0.3 * family->Direction(theta);
-      if (!InsidePolygonXY(rp.polygon, p)) continue;
+      if (!rp.polygon.ContainsXY(p.head<2>())) continue;
       face = &rp;
       truth = theta * 180 / M_PI;
       break;

@@ -10,6 +10,7 @@
 #include "algorithms/eval/eval_report.h"
 #include "algorithms/eval/overlay.h"
 #include "algorithms/geometry/slope.h"
+#include "algorithms/simulate/scene_truth.h"
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/output_file.h"
@@ -23,14 +24,6 @@ namespace fs = std::filesystem;
 
 namespace roofsweep {
 namespace {
-
-bool IsRoofKind(const std::string& kind) {
-  // The simulator's roof edge kinds (algorithms/simulate/scene_truth.h).
-  for (const char* k : {"ridge", "hip", "valley", "break", "eave", "verge", "wall_top", "step",
-                        "party", "roof_other"})
-    if (kind == k) return true;
-  return false;
-}
 
 void CheckSameCrs(const std::string& a, const std::string& what_a, const std::string& b,
                   const std::string& what_b) {
@@ -91,7 +84,7 @@ EvalReport RunEval(const EvalRequest& r) {
   result.TransformVertices(shift);
   truth.TransformVertices(shift);
 
-  std::vector<Segment3> lines, extra;
+  std::vector<Segment3> lines, extra, clutter;
   if (!r.lines.empty()) {
     const SegmentSet set = ReadSegments(r.lines);
     CheckSameCrs(set.crs, r.lines, truth.crs, truth_path);
@@ -114,16 +107,20 @@ EvalReport RunEval(const EvalRequest& r) {
     }
   }
   if (!edges_path.empty()) {
-    // Wall edges and ground markings are true scene edges too: a 3D line on
-    // them is correct, though it completes no roof edge.
+    // Wall edges, ground markings and the props' edges are true scene
+    // edges too: a 3D line on them is correct, though it completes no roof
+    // edge. The roof edges come from the model itself.
     for (const auto& s : ReadSegmentsJson(edges_path).segments) {
-      if (!IsRoofKind(s.kind)) extra.push_back({s.segment.a - origin, s.segment.b - origin});
+      const auto kind = sim::EdgeKindFromName(s.kind);
+      if (kind && sim::IsRoofEdge(*kind)) continue;
+      (kind == sim::EdgeKind::kProp ? clutter : extra)
+          .push_back({s.segment.a - origin, s.segment.b - origin});
     }
   }
 
   EvalReport report;
   report.result = Evaluate(result, truth, options, r.lines.empty() ? nullptr : &lines,
-                           extra.empty() ? nullptr : &extra);
+                           extra.empty() ? nullptr : &extra, clutter.empty() ? nullptr : &clutter);
   report.table = FormatTable(report.result);
   report.json = ToJson(report.result);
   if (!r.planes.empty()) {

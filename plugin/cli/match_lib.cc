@@ -10,6 +10,7 @@
 #include "algorithms/core/format.h"
 #include "algorithms/eval/line_eval.h"
 #include "algorithms/geometry/view.h"
+#include "algorithms/simulate/scene_truth.h"
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/segments_json.h"
 #include "io/core/block_manifest.h"
@@ -34,8 +35,8 @@ std::string Hex(const Eigen::Vector3f& c) {
 }
 
 bool IsRoofKind(const std::string& k) {
-  return k == "ridge" || k == "hip" || k == "valley" || k == "break" || k == "eave" ||
-         k == "verge" || k == "wall_top" || k == "step" || k == "party" || k == "roof_other";
+  const auto kind = sim::EdgeKindFromName(k);
+  return kind && sim::IsRoofEdge(*kind);
 }
 
 // The matches against a VGG set's annotation, its views found by name.
@@ -158,11 +159,15 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   if (block.surface) out.surface = LinesOnSurfaceModel(block, out.result.lines);
 
   if (!r.truth.empty() && !vgg) {
-    std::vector<Segment3> lines, roof, extra;
+    std::vector<Segment3> lines, roof, extra, clutter;
     for (const Line3D& l : out.result.lines) lines.push_back(l.segment);
     for (size_t k = 0; k < truth.segments.size(); ++k)
-      (IsRoofKind(truth.segments[k].kind) ? roof : extra).push_back(truth_local[k]);
-    const eval::LineScores s = eval::EvaluateLines(lines, roof, extra, eval::LineEvalOptions{});
+      (IsRoofKind(truth.segments[k].kind)                                  ? roof
+       : truth.segments[k].kind == sim::EdgeKindName(sim::EdgeKind::kProp) ? clutter
+                                                                           : extra)
+          .push_back(truth_local[k]);
+    const eval::LineScores s =
+        eval::EvaluateLines(lines, roof, extra, eval::LineEvalOptions{}, nullptr, &clutter);
     if (s.result_length_m > 0) out.precision = s.result_on_reference_m / s.result_length_m;
     if (s.reference_length_m > 0) out.completeness = s.reference_covered_m / s.reference_length_m;
     if (s.roof_edge_length_m > 0)

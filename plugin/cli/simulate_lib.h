@@ -61,7 +61,8 @@ struct SimulateSummary {
 //   dtm.tif                        with a terrain slope: the terrain heights
 //                                  (1 m cells, block CRS), named by block.json
 //   groundtruth.gml                LoD2 ground truth, CityGML 2.0, block CRS
-//   groundtruth_edges.json         3D roof edges and ground markings with kinds
+//   groundtruth_edges.json         3D roof, wall and prop edges and ground
+//                                  markings, with kinds
 //   footprints.gpkg                the true building footprints (ground
 //                                  surfaces, layer `footprints`, field id) for
 //                                  `run`'s footprint input; not in block.json
