@@ -43,9 +43,7 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep match city/block.json -aoi 391800,5819000,392000,5819200 -o t.gpkg");
   if (!p.Parse(args)) return 0;
   flags.Apply(p);
-  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
-  if (!(r.tile_buffer_m >= 0))
-    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
+  r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
   if (r.aoi && !r.truth.empty())
     throw UsageError("Options -aoi and -truth exclude each other: the truth scores a whole block",
                      p.Synopsis());

@@ -188,7 +188,7 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
 
   t0 = std::chrono::steady_clock::now();
   std::vector<LayerFeature> features;
-  const bool windowed = tile && !tile->windows.empty();
+  const bool windowed = tile && tile->Windowed();
   for (const Line3D& l : out.result.lines)
     features.push_back(
         Line3DFeature(l, block, output_xyz(l.segment.a), output_xyz(l.segment.b), !windowed));

@@ -126,9 +126,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg")
       .Example("roofsweep run city/block.json -aoi 391800,5819000,392000,5819200 -o t.gml");
   if (!p.Parse(args)) return 0;
-  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
-  if (!(r.tile_buffer_m >= 0))
-    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
+  r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
   if (!(r.min_edge_support >= 0 && r.min_edge_support <= 1))
     throw UsageError("Option -min_edge_support expects a share from 0 to 1", p.Synopsis());
   r.line_planes = !sweep_only;
@@ -177,9 +175,7 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
   p.Example("roofsweep sweep out/block -o half_planes.gpkg");
   if (!p.Parse(args)) return 0;
   flags.Apply(p);
-  if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
-  if (!(r.tile_buffer_m >= 0))
-    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
+  r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);

@@ -371,7 +371,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<LayerFeature> features;
     // As `match` writes them, so that `run -lines` on this layer sweeps
     // the same lines with the same reference views.
-    const bool whole_images = !tile || tile->windows.empty();
+    const bool whole_images = !tile || !tile->Windowed();
     for (const Line3D& l : matched.lines)
       features.push_back(Line3DFeature(l, block, frame.ToCrs(l.segment.a), frame.ToCrs(l.segment.b),
                                        whole_images));
@@ -497,7 +497,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<Segment3> known;
     // Lines read from a file name segments of the whole images; in a tile's
     // windows those ids name other segments.
-    const bool ids_apply = r.lines_in.empty() || !tile || tile->windows.empty();
+    const bool ids_apply = r.lines_in.empty() || !tile || !tile->Windowed();
     for (const Line3D& l : matched.lines) {
       known.push_back(l.segment);
       if (ids_apply)

@@ -99,7 +99,7 @@ std::vector<Eigen::Vector4d> TileGrid(const std::vector<ViewFootprint>& footprin
 
 std::vector<cv::Mat> ReadBlockImages(const Block& block, const TileCut* tile,
                                      const std::string& source) {
-  const bool windowed = tile && !tile->windows.empty();
+  const bool windowed = tile && tile->Windowed();
   long long pixels = 0;
   if (tile) {
     pixels = tile->pixels_read;

@@ -28,6 +28,9 @@ struct TileCut {
   // Pixels the cut block's views read (windows, or whole images when not cut).
   long long pixels_read = 0;
   std::string message;  // what was cut, for the log
+  // The images are read in windows: the segment ids of the lines then index
+  // a window's segments, which name no segment of the whole image.
+  bool Windowed() const { return !windows.empty(); }
 };
 
 // Cuts `block` (which has an aoi) down to the views that see its tile and

@@ -58,4 +58,12 @@ Eigen::Vector4d ParseAoi(const ArgParser& p, const std::string& text) {
   return Eigen::Vector4d(a, b, c, d);
 }
 
+std::optional<Eigen::Vector4d> ParseTileOptions(const ArgParser& p, const std::string& aoi,
+                                                double tile_buffer_m) {
+  if (!(tile_buffer_m >= 0))
+    throw UsageError("Option -tile_buffer expects a distance of 0 m or more", p.Synopsis());
+  if (aoi.empty()) return std::nullopt;
+  return ParseAoi(p, aoi);
+}
+
 }  // namespace roofsweep::cli

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 
 #include "plugin/cli/arg_parser.h"
@@ -25,5 +26,10 @@ void RequireCityModelFormat(const ArgParser& p, const std::string& path, const s
 
 // -aoi MINX,MINY,MAXX,MAXY: four finite numbers with min < max.
 Eigen::Vector4d ParseAoi(const ArgParser& p, const std::string& text);
+
+// The tile options of run, sweep and match: -aoi (`aoi` empty: none given)
+// and -tile_buffer, a distance of 0 m or more.
+std::optional<Eigen::Vector4d> ParseTileOptions(const ArgParser& p, const std::string& aoi,
+                                                double tile_buffer_m);
 
 }  // namespace roofsweep::cli
