@@ -13,9 +13,11 @@ int Lines(const std::vector<std::string>& args, Context& ctx) {
   LinesRequest r;
   std::string method = "max";
   double min_length = r.edges.min_length;
+  std::string aoi;
   ArgParser p("lines",
               "Extracts straight colour edge segments (Scholze et al. 2000) from every image of a "
-              "block and writes one LineString layer per image (lines_<image stem>) in image "
+              "block (or those that see a tile: -aoi) and writes one LineString layer per image "
+              "(lines_<image stem>) in image "
               "pixel coordinates: x right, y down, origin at the top-left corner of the "
               "top-left pixel; no CRS.");
   p.Positional("BLOCK", &r.block, "block manifest, folder holding block.json, or FORMAT:SOURCE")
@@ -28,17 +30,24 @@ int Lines(const std::vector<std::string>& args, Context& ctx) {
             "also take the edges found at half resolution where no full-resolution segment "
             "lies (hips and valleys broken up by tile courses; attribute scale = 2)")
       .Option("-png|--png", &r.png_dir, "DIR", "also write <layer>.png overlays into DIR")
+      .Option("-aoi", &aoi, "MINX,MINY,MAXX,MAXY",
+              "one tile, in the block CRS (default: the block's aoi, if any): only the images "
+              "that see it and its buffer, each in the window that does, as `run -aoi` reads "
+              "them (needs the orientation); coordinates stay those of the whole image")
+      .Option("-tile_buffer", &r.tile_buffer_m, "M", "read this far around the tile (default 30)")
       .KeyValues("-dsco", &r.dataset_options,
                  "GDAL dataset creation option (e.g. GPKG VERSION=1.2)")
       .KeyValues("-lco", &r.layer_options,
                  "GDAL layer creation option, every layer (e.g. GPKG SPATIAL_INDEX=NO)")
       .Flag("-overwrite|--overwrite", &r.overwrite, "replace an existing output file")
       .Example("roofsweep lines out/block -o lines.gpkg -png out/overlays")
-      .Example("roofsweep lines vgg:merton1 -o merton_lines.gpkg --method dizenzo");
+      .Example("roofsweep lines vgg:merton1 -o merton_lines.gpkg --method dizenzo")
+      .Example("roofsweep lines city/block.json -aoi 391800,5819000,392000,5819200 -o t.gpkg");
   if (!p.Parse(args)) return 0;
   if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());
   RequireVectorFormat(p, r.output, r.format);
   RequireNewOutput(p, r.output, r.overwrite);
+  r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
   if (method == "max") {
     r.edges.method = GradientMethod::kMax;
   } else if (method == "dizenzo") {

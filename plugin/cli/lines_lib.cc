@@ -23,6 +23,7 @@
 #include "io/core/image_io.h"
 #include "io/core/manifest_paths.h"
 #include "io/orientation/block_source.h"
+#include "plugin/cli/tile_lib.h"
 
 namespace roofsweep {
 namespace {
@@ -136,8 +137,9 @@ LinesSummary RunLines(const LinesRequest& r, Progress& progress) {
   // Refuse an existing output, an unknown format or bad creation options
   // before the work, not after it.
   CheckFeatureLayerOutput(r.output, lo);
-  const BlockManifest manifest = OpenBlockManifest(r.block);
+  BlockManifest manifest = OpenBlockManifest(r.block);
   if (manifest.images.empty()) throw Error(r.block + ": the block has no images");
+  if (r.aoi) manifest.aoi = r.aoi;
   if (!r.png_dir.empty()) {
     std::error_code ec;
     fs::create_directories(r.png_dir, ec);
@@ -162,40 +164,67 @@ LinesSummary RunLines(const LinesRequest& r, Progress& progress) {
     layers[i] = candidate;
   }
 
-  // Header and last block of every image first: a missing or truncated one
-  // refuses the block before any overlay is written.
-  std::vector<std::exception_ptr> errors(n);
-  tbb::parallel_for(size_t{0}, n, [&](size_t i) {
-    try {
-      CheckImageReadable(paths[i]);
-    } catch (...) {
-      errors[i] = std::current_exception();
-    }
-  });
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
-
   LinesSummary out;
-  out.images.resize(n);
-  std::vector<FeatureLayerData> data(n);
+  // The images to process (manifest indices); with a tile, the windows of
+  // those that see it, read here.
+  std::vector<size_t> todo;
+  std::vector<cv::Mat> tile_images(n);
+  std::vector<PixelWindow> window(n);
+  if (manifest.aoi) {
+    if (!(r.tile_buffer_m >= 0)) throw Error("lines: the tile buffer must be 0 m or more");
+    Block block = ManifestToBlock(manifest);
+    const TileCut tile = CutBlockToTile(&block, r.tile_buffer_m, r.block);
+    std::vector<cv::Mat> images = ReadBlockImages(block, &tile, r.block);
+    out.tile = tile.message;
+    std::map<std::string, size_t> index;
+    for (size_t i = 0; i < n; ++i) index.emplace(manifest.images[i].name, i);
+    for (size_t v = 0; v < block.views.size(); ++v) {
+      const auto it = index.find(block.views[v].name);
+      if (it == index.end()) continue;
+      todo.push_back(it->second);
+      tile_images[it->second] = std::move(images[v]);
+      if (tile.Windowed()) window[it->second] = tile.windows[v];
+    }
+    std::sort(todo.begin(), todo.end());
+  } else {
+    // Header and last block of every image first: a missing or truncated
+    // one refuses the block before any overlay is written.
+    std::vector<std::exception_ptr> errors(n);
+    tbb::parallel_for(size_t{0}, n, [&](size_t i) {
+      try {
+        CheckImageReadable(paths[i]);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+    for (const auto& e : errors)
+      if (e) std::rethrow_exception(e);
+    for (size_t i = 0; i < n; ++i) todo.push_back(i);
+  }
+
+  const size_t m = todo.size();
+  std::vector<std::exception_ptr> errors(m);
+  out.images.resize(m);
+  std::vector<FeatureLayerData> data(m);
   std::mutex progress_mutex;
   int done = 0;
   bool cancelled = false;
-  tbb::parallel_for(size_t{0}, n, [&](size_t i) {
+  tbb::parallel_for(size_t{0}, m, [&](size_t k) {
+    const size_t i = todo[k];
     try {
       {
         std::lock_guard<std::mutex> lock(progress_mutex);
         if (cancelled) return;
       }
       const auto t0 = std::chrono::steady_clock::now();
-      const cv::Mat image = ReadImage(paths[i]);
+      const cv::Mat image = tile_images[i].empty() ? ReadImage(paths[i]) : tile_images[i];
       Segments2D segments;
       try {
         segments = ExtractSegments(image, r.edges);
       } catch (const Error& e) {
         throw Error(paths[i] + ": " + e.what());
       }
-      LinesImageSummary& s = out.images[i];
+      LinesImageSummary& s = out.images[k];
       s.ms = MsSince(t0);
       s.image = manifest.images[i].name;
       s.layer = layers[i];
@@ -203,20 +232,33 @@ LinesSummary RunLines(const LinesRequest& r, Progress& progress) {
       s.height = image.rows;
       s.bands = image.channels();
       s.segments = static_cast<int>(segments.size());
-      FeatureLayerData& d = data[i];
+      FeatureLayerData& d = data[k];
       d.name = layers[i];
       d.geometry = LayerGeometry::kLineString;
-      d.description = std::string(kLayerDescription) + " Image: " + paths[i] + " (" +
-                      std::to_string(image.cols) + " x " + std::to_string(image.rows) + " px).";
-      d.features.reserve(segments.size());
-      for (const Segment2D& seg : segments) d.features.push_back(ToFeature(seg));
+      const PixelWindow& w = window[i];
+      d.description =
+          std::string(kLayerDescription) + " Image: " + paths[i] +
+          (w.width > 0
+               ? " (its window of " + std::to_string(w.width) + " x " + std::to_string(w.height) +
+                     " px at x " + std::to_string(w.x) + ", y " + std::to_string(w.y) +
+                     ", read for one tile)."
+               : " (" + std::to_string(image.cols) + " x " + std::to_string(image.rows) + " px).");
       if (!r.png_dir.empty())
         WriteImage((fs::path(r.png_dir) / (layers[i] + ".png")).string(), Overlay(image, segments));
+      // Into the whole image's pixels: the window's pixel (0, 0) is the
+      // image's (w.x, w.y).
+      const Eigen::Vector2d shift(w.x, w.y);
+      d.features.reserve(segments.size());
+      for (Segment2D seg : segments) {
+        seg.p0 += shift;
+        seg.p1 += shift;
+        d.features.push_back(ToFeature(seg));
+      }
       std::lock_guard<std::mutex> lock(progress_mutex);
       ++done;
-      if (!progress.Update(0.95 * done / static_cast<double>(n), "lines")) cancelled = true;
+      if (!progress.Update(0.95 * done / static_cast<double>(m), "lines")) cancelled = true;
     } catch (...) {
-      errors[i] = std::current_exception();
+      errors[k] = std::current_exception();
     }
   });
   if (cancelled) throw Cancelled{};
@@ -232,6 +274,7 @@ LinesSummary RunLines(const LinesRequest& r, Progress& progress) {
 
 std::string FormatLinesSummary(const LinesSummary& s) {
   std::ostringstream o;
+  if (!s.tile.empty()) o << s.tile << "\n";
   int total = 0;
   for (const LinesImageSummary& i : s.images) {
     char buf[300];

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,18 +18,25 @@ struct LinesRequest {
   std::vector<std::string> dataset_options, layer_options;  // -dsco, -lco NAME=VALUE
   std::string png_dir;  // optional: overlays of the segments on each image
   EdgeOptions edges;
+  // One tile (block CRS: min x, min y, max x, max y), replacing the
+  // manifest's aoi: only the views that see it and tile_buffer_m around it
+  // are read, each in the window that does (as `run -aoi`; this needs the
+  // block's orientation). The segments keep the whole image's coordinates.
+  std::optional<Eigen::Vector4d> aoi;
+  double tile_buffer_m = 30;
 };
 
 struct LinesImageSummary {
   std::string image;  // manifest image name
   std::string layer;
-  int width = 0, height = 0, bands = 0;
+  int width = 0, height = 0, bands = 0;  // of what was read: the image or its window
   int segments = 0;
   double ms = 0;  // read + extraction
 };
 
 struct LinesSummary {
-  std::vector<LinesImageSummary> images;  // in manifest order
+  std::vector<LinesImageSummary> images;  // in manifest order (a tile's views only)
+  std::string tile;                       // what a tile cut, for the log; empty without one
   double seconds = 0;
 };
 
@@ -46,8 +55,10 @@ std::string LinesLayerName(const std::string& image_path);
 // colour_right (#rrggbb; the brighter side is on the left walking p0->p1).
 // Images are processed in parallel; the output does not depend on the
 // thread count. Any unreadable image refuses the whole block (nothing is
-// written). With png_dir, writes <layer>.png: the image with the segments
-// drawn over it.
+// written). With a tile (request.aoi or the manifest's aoi), only the
+// layers of the views that see it, their segments found in the window read
+// (ending at its border) but in the whole image's coordinates. With png_dir, writes <layer>.png:
+// the image with the segments drawn over it.
 LinesSummary RunLines(const LinesRequest& request, Progress& progress);
 
 std::string FormatLinesSummary(const LinesSummary& summary);

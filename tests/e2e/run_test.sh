@@ -460,6 +460,37 @@ PY
   ogrinfo -ro -al -q "$WORK/small_sweep_lines.gpkg" lines3d | grep "observations (String)" >"$WORK/obs.txt"
   [[ -s "$WORK/obs.txt" ]] && ! grep -Eq ":([0-9]|-[02-9])" "$WORK/obs.txt" \
     && pass tile_sweep_lines || fail tile_sweep_lines "$(head -3 "$WORK/obs.txt")"
+  # lines reads the same windows, and writes their segments in the whole
+  # images' pixels: most of them are those of the whole images (the rest end
+  # at a window's border, or were thresholded on the window's statistics).
+  expect_ok tile_lines_whole lines "$SIM" -o "$WORK/lines_whole.gpkg" -q || return
+  expect_ok tile_lines lines "$SIM" -aoi "$small" -tile_buffer 5 -o "$WORK/lines_tile.gpkg" || return
+  grep -Eq "^tile: [0-9]+ of 4 views see it and its 5 m buffer" "$WORK/stdout.txt" \
+    && pass tile_lines_message || fail tile_lines_message "$(head -3 "$WORK/stdout.txt")"
+  python3 - "$WORK/lines_whole.gpkg" "$WORK/lines_tile.gpkg" <<'PY' && pass tile_lines_coordinates || fail tile_lines_coordinates "see above"
+import sqlite3, struct, sys
+def segments(path):
+    db = sqlite3.connect(path)
+    out = {}
+    for (name,) in db.execute("SELECT table_name FROM gpkg_contents WHERE data_type = 'features'"):
+        rows = []
+        for (blob,) in db.execute(f'SELECT geom FROM "{name}"'):
+            flags = blob[3]
+            envelope = {0: 0, 1: 32, 2: 48, 3: 48, 4: 64}[(flags >> 1) & 7]
+            wkb = blob[8 + envelope:]
+            order = "<" if wkb[0] == 1 else ">"
+            n = struct.unpack(order + "I", wkb[5:9])[0]
+            rows.append(struct.unpack(order + "%dd" % (2 * n), wkb[9:9 + 16 * n]))
+        out[name] = rows
+    return out
+whole, tile = segments(sys.argv[1]), segments(sys.argv[2])
+assert tile and set(tile) <= set(whole), (sorted(tile), sorted(whole))
+for name, rows in tile.items():
+    assert rows, name
+    same = sum(any(max(abs(a - b) for a, b in zip(r, w)) < 0.01 for w in whole[name]) for r in rows)
+    print(name, len(rows), "segments,", same, "as in the whole image")
+    assert same >= 0.7 * len(rows), name
+PY
   expect_fail tile_match_truth "$WORK/t.gpkg" "-aoi and -truth" -- match "$SIM" -aoi "$small" \
     -truth "$SIM/groundtruth_edges.json" -o "$WORK/t.gpkg"
   # A tile the images do not see, and a malformed one.

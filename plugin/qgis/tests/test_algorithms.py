@@ -341,6 +341,18 @@ def test_lines_and_match_on_tiny_block(tiny_block, tmp_path, roofsweep_exe):
     assert part.isValid() and part.featureCount() > 0
     assert part.extent().xMinimum() > box.xMinimum() - 60 and part.extent().xMaximum() < box.center().x() + 60
     assert all(o.endswith(":-1") for f in part.getFeatures() for o in f["observations"].split())
+    # lines reads the same windows; its segments keep the whole images'
+    # pixel coordinates, so they lie within the images and beyond the
+    # windows' own sizes where a window does not start at the corner.
+    seg_tile = str(tmp_path / "segments_tile.gpkg")
+    fb = RecordingFeedback()
+    processing.run("roofsweep:lines", {"BLOCK": res["BLOCK"], "OUTPUT": seg_tile, "EXTENT": tile}, feedback=fb)
+    assert any(c.startswith("tile: ") for c in fb.console), fb.console
+    ds = ogr.Open(seg_tile)
+    layers = [ds.GetLayer(i) for i in range(ds.GetLayerCount())]
+    assert layers and all(lyr.GetFeatureCount() > 0 for lyr in layers)
+    assert all("read for one tile" in lyr.GetMetadataItem("DESCRIPTION") for lyr in layers)
+    ds = None
 
 
 def test_unavailable_subcommand_fails_clearly(tmp_path, tiny_block):

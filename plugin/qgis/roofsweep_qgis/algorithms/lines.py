@@ -1,6 +1,6 @@
 """Extract line segments: roofsweep lines."""
 
-from qgis.core import (QgsProcessingParameterEnum, QgsProcessingParameterFile,
+from qgis.core import (QgsProcessingParameterEnum, QgsProcessingParameterExtent, QgsProcessingParameterFile,
                        QgsProcessingParameterFileDestination, QgsProcessingParameterFolderDestination,
                        QgsProcessingParameterNumber)
 
@@ -15,13 +15,16 @@ class LinesAlgorithm(RoofsweepAlgorithm):
     DISPLAY = "Extract line segments"
     HELP = ("Extracts straight colour edge segments (Scholze 2000) from every image of a block and writes one "
             "LineString layer per image (lines_<image>) in image pixel coordinates (x right, y down, origin at "
-            "the top-left corner; no CRS). The layers are not added to the map, which is georeferenced.")
-    USES_OPTIONS = ("-o", "-method", "-min-length", "-png", "-overwrite")
+            "the top-left corner; no CRS). The layers are not added to the map, which is georeferenced. "
+            "With a tile extent, only the images that see it (and 30 m around it) are read, each in the "
+            "window that does, as for the reconstruction; the coordinates stay those of the whole image.")
+    USES_OPTIONS = ("-o", "-method", "-min-length", "-png", "-aoi", "-overwrite")
 
     BLOCK = "BLOCK"
     METHOD = "METHOD"
     MIN_LENGTH = "MIN_LENGTH"
     PNG = "PNG"
+    EXTENT = "EXTENT"
     OUTPUT = "OUTPUT"
 
     def initAlgorithm(self, config=None):
@@ -33,6 +36,8 @@ class LinesAlgorithm(RoofsweepAlgorithm):
                                                        QgsProcessingParameterNumber.Double, 15.0, False, 2.0))
         self.addParameter(QgsProcessingParameterFolderDestination(self.PNG, self.tr("Overlay images folder"),
                                                                   optional=True, createByDefault=False))
+        self.addParameter(QgsProcessingParameterExtent(
+            self.EXTENT, self.tr("Tile: read only what the images see of this extent"), optional=True))
         self.addParameter(QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Segments"),
                                                                 fileFilter="GeoPackage (*.gpkg)"))
 
@@ -44,6 +49,7 @@ class LinesAlgorithm(RoofsweepAlgorithm):
         png = self.parameterAsString(parameters, self.PNG, context) if self.given(parameters, self.PNG) else ""
         if png:
             args += ["-png", png]
+        args += self.aoi_arguments(parameters, self.EXTENT, block, context)
         args += ["-overwrite", "-o", out]
         self.run_program(args, feedback)
         result = {self.OUTPUT: out}
