@@ -71,6 +71,8 @@ TEST(EdgeKindFromName, EveryKindRoundTrips) {
     EXPECT_EQ(EdgeKindFromName(EdgeKindName(kind)), kind);
   }
   EXPECT_FALSE(EdgeKindFromName("chimney").has_value());
+  // No kind beyond the last one the walk knows of.
+  EXPECT_STREQ(EdgeKindName(static_cast<EdgeKind>(static_cast<int>(EdgeKind::kProp) + 1)), "?");
 }
 
 }  // namespace

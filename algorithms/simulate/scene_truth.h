@@ -27,6 +27,7 @@ enum class EdgeKind {
   kFootprint,      // wall-ground
   kGroundMarking,  // painted line border or pavement edge on the terrain
   kProp,           // edge of a car, hedge, chimney, solar panel, ... in the open air (not LoD2)
+  // kProp stays last: EdgeKindFromName walks the kinds up to it.
 };
 const char* EdgeKindName(EdgeKind k);
 // The kind of an EdgeKindName (as groundtruth_edges.json holds it); nullopt

@@ -57,7 +57,8 @@ std::string LinesLayerName(const std::string& image_path);
 // thread count. Any unreadable image refuses the whole block (nothing is
 // written). With a tile (request.aoi or the manifest's aoi), only the
 // layers of the views that see it, their segments found in the window read
-// (ending at its border) but in the whole image's coordinates. With png_dir, writes <layer>.png:
+// (ending at its border) but in the whole image's coordinates; the png_dir
+// overlays then show the windows. With png_dir, writes <layer>.png:
 // the image with the segments drawn over it.
 LinesSummary RunLines(const LinesRequest& request, Progress& progress);
 
