@@ -489,7 +489,8 @@ for name, rows in tile.items():
     assert rows, name
     same = sum(any(max(abs(a - b) for a, b in zip(r, w)) < 0.01 for w in whole[name]) for r in rows)
     print(name, len(rows), "segments,", same, "as in the whole image")
-    assert same >= 0.7 * len(rows), name
+    # 71-86 % here; without the shift into the whole image, next to none.
+    assert same >= 0.5 * len(rows), name
 PY
   expect_fail tile_match_truth "$WORK/t.gpkg" "-aoi and -truth" -- match "$SIM" -aoi "$small" \
     -truth "$SIM/groundtruth_edges.json" -o "$WORK/t.gpkg"
