@@ -86,4 +86,12 @@ std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis
   return out;
 }
 
+bool ConcaveCrease(const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b) {
+  const double area_a = SignedArea(a.patch), area_b = SignedArea(b.patch);
+  if (a.patch.size() < 3 || b.patch.size() < 3 || area_a == 0 || area_b == 0) return false;
+  const Eigen::Vector2d ca = FirstMoment(a.patch) / area_a, cb = FirstMoment(b.patch) / area_b;
+  return PlaneZ(b.plane, ca.x(), ca.y()) < PlaneZ(a.plane, ca.x(), ca.y()) &&
+         PlaneZ(a.plane, cb.x(), cb.y()) < PlaneZ(b.plane, cb.x(), cb.y());
+}
+
 }  // namespace roofsweep

@@ -24,6 +24,15 @@ struct NearCoplanarMergeOptions {
   // The caller keeps a merge when the verification accepts it and its
   // score is at most min_score_loss below the lower of the two planes'.
   double min_score_loss = 0.05;
+  // Two planes in a concave crease (ConcaveCrease) are not one face when,
+  // over one of the two patches alone, the merged plane scores more than
+  // min_score_loss below that plane's own score: a steep face and a
+  // shallower false plane below its eave (over a lawn, down to a shed's
+  // eave) score, merged, about as well as the weaker of the two, but the
+  // merged plane fits the false part clearly worse than its own plane
+  // does. The lower envelope cannot roof both, so the caller keeps the one
+  // with the higher verified score.
+  bool concave_parts = true;
 };
 
 // One proposed merge of planes[a] and planes[b].
@@ -44,5 +53,12 @@ struct PlaneMerge {
 // Deterministic.
 std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis>& planes,
                                            const NearCoplanarMergeOptions& options = {});
+
+// True when each plane lies below the other one over the other's patch (at
+// the patch's centroid): a steep face with a shallower plane that meets it
+// without a step below its eave, not a gable's ridge nor a mansard's break.
+// A building is roofed with the lower envelope of its planes, so it would
+// put each of the two over the other's part and lose both faces.
+bool ConcaveCrease(const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b);
 
 }  // namespace roofsweep

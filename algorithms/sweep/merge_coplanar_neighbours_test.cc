@@ -81,5 +81,31 @@ TEST(NearCoplanarMerges, EachPlaneJoinsOnePairTheStrongestFirst) {
   EXPECT_EQ(m[0].b, 2);
 }
 
+TEST(ConcaveCrease, OnlyAShallowerPlaneBelowASteeperOne) {
+  // A 45 deg face falling north to an eave at y = 5, z = 10.
+  const Eigen::Vector3d eave(0, 5, 10);
+  const RoofPlaneHypothesis face =
+      Hyp(SlopedPlane(eave, 45, 90), {{0, 0}, {10, 0}, {10, 5}, {0, 5}}, "face");
+  // Beyond the eave, falling the same way at 40 deg (a false plane over the
+  // lawn): concave, each is the lower one over the other's patch.
+  const RoofPlaneHypothesis lawn =
+      Hyp(SlopedPlane(eave, 40, 90), {{0, 5}, {10, 5}, {10, 14}, {0, 14}}, "lawn");
+  EXPECT_TRUE(ConcaveCrease(face, lawn));
+  EXPECT_TRUE(ConcaveCrease(lawn, face));
+  // A mansard's steep lower face below the break (70 deg): convex.
+  const RoofPlaneHypothesis mansard =
+      Hyp(SlopedPlane(eave, 70, 90), {{0, 5}, {10, 5}, {10, 7}, {0, 7}}, "mansard");
+  EXPECT_FALSE(ConcaveCrease(face, mansard));
+  // The other face of a gable whose ridge is at y = 0: convex too.
+  const Eigen::Vector3d ridge(0, 0, 15);
+  const RoofPlaneHypothesis other =
+      Hyp(SlopedPlane(ridge, 45, -90), {{0, -5}, {10, -5}, {10, 0}, {0, 0}}, "other");
+  EXPECT_FALSE(ConcaveCrease(face, other));
+  // A plane with no patch is never in a crease.
+  RoofPlaneHypothesis empty = lawn;
+  empty.patch.clear();
+  EXPECT_FALSE(ConcaveCrease(face, empty));
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -118,7 +118,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "in the inner corner of an L-shaped house, joined from its two eaves)")
       .Flag("-no_coplanar_merge", &no_merge,
             "do not merge two roof planes a few degrees apart that meet without a step (one "
-            "face fitted twice), even where the images confirm the merged plane");
+            "face fitted twice), even where the images confirm the merged plane; nor keep only "
+            "the better of two such planes that meet in a concave crease and are not one face");
   MatchFlags flags;
   AddProcessingOptions(p, r, &flags);
   p.Example("roofsweep run sim/block.json -o buildings.gml")

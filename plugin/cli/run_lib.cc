@@ -696,7 +696,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
 
   // One face fitted as two planes a few degrees apart: the merged plane
   // replaces both where the images confirm it about as well as the weaker
-  // of the two.
+  // of the two. Two planes in a concave crease that it fits clearly worse
+  // over one part than that part's own plane are two surfaces: only the
+  // one that fits the images better stays.
   if (r.merge_coplanar) {
     t0 = Clock::now();
     const std::vector<PlaneMerge> merges = NearCoplanarMerges(roof_planes, r.merge);
@@ -705,13 +707,54 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     SubProgress none(progress, 0.99, 0.99);
     const std::vector<PlaneVerification> checks =
         VerifyPlanes(block, images, proposals, r.verify, none);
+    // A pair in a concave crease: the merged plane over each part's own
+    // patch (NearCoplanarMergeOptions::concave_parts).
+    std::vector<char> concave(merges.size(), 0);
+    std::vector<RoofPlaneHypothesis> on_parts;
+    for (size_t k = 0; k < merges.size(); ++k) {
+      const PlaneMerge& m = merges[k];
+      concave[k] =
+          r.merge.concave_parts && ConcaveCrease(roof_planes[m.a], roof_planes[m.b]) ? 1 : 0;
+      if (!concave[k]) continue;
+      for (int part : {m.a, m.b}) {
+        RoofPlaneHypothesis h = m.merged;
+        h.patch = roof_planes[part].patch;
+        on_parts.push_back(std::move(h));
+      }
+    }
+    const std::vector<PlaneVerification> part_checks =
+        VerifyPlanes(block, images, on_parts, r.verify, none);
     std::vector<char> merged_away(roof_planes.size(), 0);
     std::vector<RoofPlaneHypothesis> merged;
+    int creases = 0;
+    size_t part_check = 0;
     for (size_t k = 0; k < merges.size(); ++k) {
       const RoofPlaneHypothesis &a = roof_planes[merges[k].a], &b = roof_planes[merges[k].b];
+      bool parts_hold = true;
+      if (concave[k]) {
+        for (const RoofPlaneHypothesis* p : {&a, &b}) {
+          // NaN (too few textured samples) does not refute.
+          const double s = part_checks[part_check++].score;
+          parts_hold = parts_hold && !(s < p->similarity - r.merge.min_score_loss);
+        }
+      }
       if (!checks[k].accepted ||
           checks[k].score < std::min(a.similarity, b.similarity) - r.merge.min_score_loss)
         continue;
+      if (!parts_hold) {
+        // Not one face, and the assembly's lower envelope cannot roof both:
+        // it would put each plane over the other's part. The images decide
+        // which one stays.
+        const bool drop_a = a.similarity < b.similarity;
+        const RoofPlaneHypothesis &loser = drop_a ? a : b, &winner = drop_a ? b : a;
+        merged_away[drop_a ? merges[k].a : merges[k].b] = 1;
+        out.rejected.push_back(
+            StrFormat("%s: meets a plane that fits the images better in a concave crease, "
+                      "without a step (%.2f against %.2f for %s)",
+                      loser.id.c_str(), loser.similarity, winner.similarity, winner.id.c_str()));
+        ++creases;
+        continue;
+      }
       RoofPlaneHypothesis m = std::move(proposals[k]);
       if (!checks[k].patch.empty()) m.patch = checks[k].patch;
       m.similarity = checks[k].score;
@@ -729,7 +772,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (RoofPlaneHypothesis& m : merged) kept.push_back(std::move(m));
     roof_planes = std::move(kept);
     out.stages.push_back({"near-coplanar planes merged",
-                          StrFormat("%zu pairs proposed, %zu merged", merges.size(), n_merged),
+                          StrFormat("%zu pairs proposed, %zu merged, %d apart in a concave "
+                                    "crease",
+                                    merges.size(), n_merged, creases),
                           Since(t0)});
   }
 
