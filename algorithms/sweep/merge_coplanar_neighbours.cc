@@ -81,6 +81,7 @@ std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis
     h.derived = a.derived && b.derived;
     h.height_from_lines = a.height_from_lines && b.height_from_lines;
     h.id = a.id + " merged with " + b.id;
+    m.concave = o.concave_parts && ConcaveCrease(a, b);
     out.push_back(std::move(m));
   }
   return out;

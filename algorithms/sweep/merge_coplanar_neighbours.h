@@ -39,7 +39,17 @@ struct NearCoplanarMergeOptions {
 struct PlaneMerge {
   int a = -1, b = -1;
   RoofPlaneHypothesis merged;  // refitted plane over the hull of both patches
+  // The two meet in a concave crease (ConcaveCrease), with concave_parts:
+  // the caller checks the merged plane over each part.
+  bool concave = false;
 };
+
+// True when each plane lies below the other one over the other's patch (at
+// the patch's centroid): a steep face with a shallower plane that meets it
+// without a step below its eave, not a gable's ridge nor a mansard's break.
+// A building is roofed with the lower envelope of its planes, so it would
+// put each of the two over the other's part and lose both faces.
+bool ConcaveCrease(const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b);
 
 // One face often comes out as two planes a few degrees apart: two sets of
 // its lines that the grouping kept apart (more than GroupingOptions::
@@ -53,12 +63,5 @@ struct PlaneMerge {
 // Deterministic.
 std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis>& planes,
                                            const NearCoplanarMergeOptions& options = {});
-
-// True when each plane lies below the other one over the other's patch (at
-// the patch's centroid): a steep face with a shallower plane that meets it
-// without a step below its eave, not a gable's ridge nor a mansard's break.
-// A building is roofed with the lower envelope of its planes, so it would
-// put each of the two over the other's part and lose both faces.
-bool ConcaveCrease(const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b);
 
 }  // namespace roofsweep

@@ -37,6 +37,7 @@ TEST(NearCoplanarMerges, OneFaceFittedTwiceBecomesOnePlane) {
   ASSERT_EQ(m.size(), 1u);
   EXPECT_EQ(m[0].a, 0);
   EXPECT_EQ(m[0].b, 1);
+  EXPECT_FALSE(m[0].concave);  // side by side on one face: no crease to check
   const RoofPlaneHypothesis& h = m[0].merged;
   EXPECT_EQ(h.lines, 4);
   EXPECT_NE(h.id.find("west merged with east"), std::string::npos) << h.id;
@@ -92,6 +93,10 @@ TEST(ConcaveCrease, OnlyAShallowerPlaneBelowASteeperOne) {
       Hyp(SlopedPlane(eave, 40, 90), {{0, 5}, {10, 5}, {10, 14}, {0, 14}}, "lawn");
   EXPECT_TRUE(ConcaveCrease(face, lawn));
   EXPECT_TRUE(ConcaveCrease(lawn, face));
+  // They meet without a step and 5 deg apart: a proposed merge, marked.
+  const std::vector<PlaneMerge> m = NearCoplanarMerges({face, lawn});
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_TRUE(m[0].concave);
   // A mansard's steep lower face below the break (70 deg): convex.
   const RoofPlaneHypothesis mansard =
       Hyp(SlopedPlane(eave, 70, 90), {{0, 5}, {10, 5}, {10, 7}, {0, 7}}, "mansard");

@@ -709,13 +709,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         VerifyPlanes(block, images, proposals, r.verify, none);
     // A pair in a concave crease: the merged plane over each part's own
     // patch (NearCoplanarMergeOptions::concave_parts).
-    std::vector<char> concave(merges.size(), 0);
     std::vector<RoofPlaneHypothesis> on_parts;
-    for (size_t k = 0; k < merges.size(); ++k) {
-      const PlaneMerge& m = merges[k];
-      concave[k] =
-          r.merge.concave_parts && ConcaveCrease(roof_planes[m.a], roof_planes[m.b]) ? 1 : 0;
-      if (!concave[k]) continue;
+    for (const PlaneMerge& m : merges) {
+      if (!m.concave) continue;
       for (int part : {m.a, m.b}) {
         RoofPlaneHypothesis h = m.merged;
         h.patch = roof_planes[part].patch;
@@ -731,7 +727,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     for (size_t k = 0; k < merges.size(); ++k) {
       const RoofPlaneHypothesis &a = roof_planes[merges[k].a], &b = roof_planes[merges[k].b];
       bool parts_hold = true;
-      if (concave[k]) {
+      if (merges[k].concave) {
         for (const RoofPlaneHypothesis* p : {&a, &b}) {
           // NaN (too few textured samples) does not refute.
           const double s = part_checks[part_check++].score;
