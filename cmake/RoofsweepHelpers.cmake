@@ -79,7 +79,7 @@ function(roofsweep_benchmark name)
   cmake_parse_arguments(A "" "" "SOURCES;DEPS" ${ARGN})
   if(ROOFSWEEP_BENCHMARKS)
     add_executable(${name} ${A_SOURCES})
-    target_link_libraries(${name} PRIVATE ${A_DEPS} benchmark::benchmark_main)
+    target_link_libraries(${name} PRIVATE ${A_DEPS} rs_bench_main)
   endif()
 endfunction()
 

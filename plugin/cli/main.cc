@@ -7,13 +7,13 @@
 #include <cpl_error.h>
 #include <cpl_string.h>
 #include <gdal.h>
-#include <malloc.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include "algorithms/core/error.h"
+#include "algorithms/core/heap_policy.h"
 #include "plugin/cli/arg_parser.h"
 #include "plugin/cli/command.h"
 #include "plugin/cli/gdal_progress.h"
@@ -52,12 +52,7 @@ void PrintMainUsage(std::FILE* to) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Images of 2048² are 16-48 MB per band set; above glibc's default
-  // threshold each one is a fresh mmap whose pages fault in on first touch
-  // and go back to the kernel on free, about a tenth of `match`'s CPU time.
-  // Served from the heap and kept there, the pages are reused.
-  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
-  mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
+  roofsweep::KeepLargeAllocationsOnHeap();
   GDALAllRegister();
   // Handles --version, --formats, --config, --debug, --optfile, --help-general
   // and removes them from argv, exactly as in the GDAL utilities.
