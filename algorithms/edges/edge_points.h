@@ -12,7 +12,8 @@ struct EdgePoint {
   float x = 0, y = 0;    // sub-pixel position, corner convention
   float gx = 0, gy = 0;  // fused gradient (see GradientField)
   float magnitude = 0;
-  int px = 0, py = 0;  // the pixel it was found in
+  int px = 0, py = 0;                // the pixel it was found in
+  EdgeBand band = EdgeBand::kFused;  // the band that carries the gradient (CarryingBand)
 };
 
 // Edge points plus a raster index into them (CV_32S, -1 where none).

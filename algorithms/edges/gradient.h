@@ -7,13 +7,17 @@
 
 namespace roofsweep {
 
-// The fused gradient of an image: the smoothed planes and the gradient
-// magnitude. The gradient vectors are not stored but recomputed per row
-// (GradientRow) where needed: that costs less than writing and reading two
-// more float images.
+// The fused gradient of an image: the smoothed planes, the gradient
+// magnitude and its nearer axis. The gradient vectors are not stored but
+// recomputed where needed (GradientRow, GradientAt): that costs less than
+// writing and reading two more float images.
 struct GradientField {
   cv::Mat magnitude;  // CV_32F fused gradient norm, intensity per pixel; 0 on the outermost rows
                       // and columns
+  // CV_8U, 1 where the gradient is nearer the x axis (|gx| >= |gy|), else 0
+  // (and on the outermost rows and columns): the axis along which
+  // DetectEdgePoints compares magnitudes.
+  cv::Mat horizontal;
   std::vector<cv::Mat> smoothed;                 // the smoothed CV_32F planes (1 or 3)
   GradientMethod method = GradientMethod::kMax;  // kGrey for one plane
 };
@@ -24,6 +28,18 @@ struct GradientField {
 // band (the Di Zenzo eigenvector has none), so it points from the darker to
 // the brighter side of that band.
 void GradientRow(const GradientField& gradient, int y, float* m, float* gx, float* gy);
+
+// The fused gradient at pixel (x, y), 0 < x < cols - 1, 0 < y < rows - 1,
+// equal to GradientRow's there, with the band that carries it (see
+// CarryingBand): for edge points, a small share of the pixels.
+struct GradientVector {
+  float gx = 0, gy = 0;
+  EdgeBand band = EdgeBand::kFused;
+};
+GradientVector GradientAt(const GradientField& gradient, int x, int y);
+// GradientAt at columns xs[0 .. n - 1] of row y, into out[0 .. n - 1].
+void GradientAtColumns(const GradientField& gradient, int y, const int* xs, int n,
+                       GradientVector* out);
 
 // The band that carries the gradient at pixel (x, y), 0 < x < cols - 1,
 // 0 < y < rows - 1: for kMax on colour the band with the largest gradient

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstdint>
+#include <opencv2/imgproc.hpp>
 
 #include "algorithms/edges/edge_points.h"
 #include "algorithms/edges/extract_segments.h"
@@ -31,6 +33,8 @@ GradientField FieldWithMagnitude(const cv::Mat& magnitude, bool along_x) {
   for (int y = 0; y < ramp.rows; ++y)
     for (int x = 0; x < ramp.cols; ++x) ramp.at<float>(y, x) = static_cast<float>(along_x ? x : y);
   g.smoothed = {ramp};
+  g.horizontal = cv::Mat::zeros(magnitude.size(), CV_8U);
+  g.horizontal(cv::Rect(1, 1, magnitude.cols - 2, magnitude.rows - 2)).setTo(along_x ? 1 : 0);
   return g;
 }
 
@@ -120,6 +124,42 @@ TEST(Gradient, GreyUsesLuma) {
   ASSERT_EQ(planes.size(), 1u);
   const GradientField g = ComputeGradient(planes, GradientMethod::kGrey, 0.0);
   EXPECT_NEAR(g.magnitude.at<float>(2, 2), 0.299 * 0.1, 1e-5);
+}
+
+// GradientAt and the axis plane must agree with GradientRow to the bit:
+// DetectEdgePoints takes the axis from the plane and the vectors from
+// GradientAt, where it used to take both from GradientRow.
+TEST(Gradient, AtAPixelAndTheAxisEqualTheRow) {
+  const cv::Mat colour = RandomColour(37, 23, 4);
+  cv::Mat grey;
+  cv::cvtColor(colour, grey, cv::COLOR_RGB2GRAY);
+  for (const cv::Mat& image : {colour, grey}) {
+    for (GradientMethod method :
+         {GradientMethod::kMax, GradientMethod::kDiZenzo, GradientMethod::kGrey}) {
+      const GradientField g = ComputeGradient(GradientPlanes(image, method), method, 1.0);
+      cv::Mat gx, gy;
+      Vectors(g, gx, gy);
+      const int w = image.cols, h = image.rows;
+      for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+          const bool border = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+          const int want =
+              border ? 0 : std::fabs(gx.at<float>(y, x)) >= std::fabs(gy.at<float>(y, x));
+          ASSERT_EQ(g.horizontal.at<std::uint8_t>(y, x), want) << x << "," << y;
+          if (border) continue;
+          const GradientVector v = GradientAt(g, x, y);
+          ASSERT_EQ(v.gx, gx.at<float>(y, x)) << x << "," << y;
+          ASSERT_EQ(v.gy, gy.at<float>(y, x)) << x << "," << y;
+        }
+      }
+      const EdgeBand fixed = image.channels() == 1 || method == GradientMethod::kGrey
+                                 ? EdgeBand::kGrey
+                                 : EdgeBand::kFused;
+      if (image.channels() == 1 || method != GradientMethod::kMax) {
+        EXPECT_EQ(GradientAt(g, 3, 4).band, fixed);
+      }
+    }
+  }
 }
 
 TEST(Gradient, RejectsMismatchedPlanes) {

@@ -109,7 +109,11 @@ bool IsCurved(const Eigen::Vector2d* points, int count, const LineFit& fit, doub
   const Eigen::Vector2d normal = fit.Normal();
   Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
   Eigen::Vector3d atb = Eigen::Vector3d::Zero();
-  std::vector<double> us(n), rs(n);
+  // Scratch kept per thread: most calls are on short pieces, where two
+  // allocations would cost as much as the fit.
+  thread_local std::vector<double> us, rs;
+  us.resize(n);
+  rs.resize(n);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d e = points[i] - fit.centroid;
     const double u = (e.dot(fit.direction) - mid) / half;

@@ -137,7 +137,7 @@ std::vector<LinePiece> MergeCollinearPieces(std::vector<LinePiece> pieces, const
     }
     const int keep = std::min(i, j);
     const int drop = std::max(i, j);
-    pieces[keep] = MakePiece(std::move(ids), map);
+    pieces[keep] = OrientPiece(std::move(ids), fit, map);
     pieces[drop].points.clear();
     parent[drop] = keep;
   }

@@ -48,7 +48,7 @@ Segment2D PieceToSegment(const LinePiece& piece, const EdgeMap& map,
     const EdgePoint& p = map.points[id];
     sum += p.magnitude;
     if (gradient.method == GradientMethod::kMax) {
-      per_band[static_cast<int>(CarryingBand(gradient, p.px, p.py))] += p.magnitude;
+      per_band[static_cast<int>(p.band)] += p.magnitude;
     }
   }
   s.contrast = piece.points.empty() ? 0.f : static_cast<float>(sum / piece.points.size());
