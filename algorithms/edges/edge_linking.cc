@@ -35,26 +35,30 @@ std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angl
     const float along = -unit[i].y * dx + unit[i].x * dy;
     return along > 0 ? 0 : 1;
   };
+  // The 8 neighbours in the raster index, in the order that breaks ties
+  // between equally near ones (row by row, left to right).
+  const int w = map.index.cols;
+  const int neighbours[8] = {-w - 1, -w, -w + 1, -1, 1, w - 1, w, w + 1};
+  const int* index = map.index.ptr<int>(0);
   for (int i = 0; i < n; ++i) {
     const EdgePoint& p = pts[i];
+    const Unit u = unit[i];
+    const int* centre = index + static_cast<size_t>(p.py) * w + p.px;
     float best_d2[2] = {1e30f, 1e30f};
-    for (int dy = -1; dy <= 1; ++dy) {
-      const int* row = map.index.ptr<int>(p.py + dy);
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int j = row[p.px + dx];
-        if (j < 0 || j == i) continue;
-        if (std::fabs(unit[i].x * unit[j].x + unit[i].y * unit[j].y) < min_cos) continue;
-        const float ex = pts[j].x - p.x;
-        const float ey = pts[j].y - p.y;
-        const float along = -unit[i].y * ex + unit[i].x * ey;
-        const float across = unit[i].x * ex + unit[i].y * ey;
-        if (std::fabs(across) >= std::fabs(along)) continue;
-        const int side = along > 0 ? 0 : 1;
-        const float d2 = ex * ex + ey * ey;
-        if (d2 < best_d2[side]) {
-          best_d2[side] = d2;
-          best[2 * i + side] = j;
-        }
+    for (int o : neighbours) {
+      const int j = centre[o];
+      if (j < 0) continue;
+      if (std::fabs(u.x * unit[j].x + u.y * unit[j].y) < min_cos) continue;
+      const float ex = pts[j].x - p.x;
+      const float ey = pts[j].y - p.y;
+      const float along = -u.y * ex + u.x * ey;
+      const float across = u.x * ex + u.y * ey;
+      if (std::fabs(across) >= std::fabs(along)) continue;
+      const int side = along > 0 ? 0 : 1;
+      const float d2 = ex * ex + ey * ey;
+      if (d2 < best_d2[side]) {
+        best_d2[side] = d2;
+        best[2 * i + side] = j;
       }
     }
   }
