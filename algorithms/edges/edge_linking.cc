@@ -7,13 +7,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Unit {
-  float x, y;
+// What linking reads of an edge point, in 16 bytes rather than the
+// point's 32: position and unit gradient.
+struct LinkPoint {
+  float x, y, ux, uy;
 };
 
-Unit UnitGradient(const EdgePoint& p) {
+LinkPoint ToLinkPoint(const EdgePoint& p) {
   const float n = std::sqrt(p.gx * p.gx + p.gy * p.gy);
-  return n > 0 ? Unit{p.gx / n, p.gy / n} : Unit{1.f, 0.f};
+  return n > 0 ? LinkPoint{p.x, p.y, p.gx / n, p.gy / n} : LinkPoint{p.x, p.y, 1.f, 0.f};
 }
 
 }  // namespace
@@ -23,16 +25,16 @@ std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angl
   const auto& pts = map.points;
   const int n = static_cast<int>(pts.size());
   const float min_cos = static_cast<float>(std::cos(max_angle_deg * kPi / 180.0));
-  std::vector<Unit> unit(n);
-  for (int i = 0; i < n; ++i) unit[i] = UnitGradient(pts[i]);
+  std::vector<LinkPoint> lp(n);
+  for (int i = 0; i < n; ++i) lp[i] = ToLinkPoint(pts[i]);
 
   // best[2 i + side]: the nearest compatible neighbour on that side of the
   // tangent (side 0: along +t, t = gradient turned by +90°).
   std::vector<int> best(2 * static_cast<size_t>(n), -1);
   auto side_of = [&](int i, int j) {
-    const float dx = pts[j].x - pts[i].x;
-    const float dy = pts[j].y - pts[i].y;
-    const float along = -unit[i].y * dx + unit[i].x * dy;
+    const float dx = lp[j].x - lp[i].x;
+    const float dy = lp[j].y - lp[i].y;
+    const float along = -lp[i].uy * dx + lp[i].ux * dy;
     return along > 0 ? 0 : 1;
   };
   // The 8 neighbours in the raster index, in the order that breaks ties
@@ -41,18 +43,18 @@ std::vector<std::vector<int>> LinkEdgePoints(const EdgeMap& map, double max_angl
   const int neighbours[8] = {-w - 1, -w, -w + 1, -1, 1, w - 1, w, w + 1};
   const int* index = map.index.ptr<int>(0);
   for (int i = 0; i < n; ++i) {
-    const EdgePoint& p = pts[i];
-    const Unit u = unit[i];
-    const int* centre = index + static_cast<size_t>(p.py) * w + p.px;
+    const LinkPoint p = lp[i];
+    const int* centre = index + static_cast<size_t>(pts[i].py) * w + pts[i].px;
     float best_d2[2] = {1e30f, 1e30f};
     for (int o : neighbours) {
       const int j = centre[o];
       if (j < 0) continue;
-      if (std::fabs(u.x * unit[j].x + u.y * unit[j].y) < min_cos) continue;
-      const float ex = pts[j].x - p.x;
-      const float ey = pts[j].y - p.y;
-      const float along = -u.y * ex + u.x * ey;
-      const float across = u.x * ex + u.y * ey;
+      const LinkPoint q = lp[j];
+      if (std::fabs(p.ux * q.ux + p.uy * q.uy) < min_cos) continue;
+      const float ex = q.x - p.x;
+      const float ey = q.y - p.y;
+      const float along = -p.uy * ex + p.ux * ey;
+      const float across = p.ux * ex + p.uy * ey;
       if (std::fabs(across) >= std::fabs(along)) continue;
       const int side = along > 0 ? 0 : 1;
       const float d2 = ex * ex + ey * ey;
