@@ -34,9 +34,9 @@ constexpr std::uint8_t kKept = 3;
 
 // The columns 1 .. w - 2 of a state row holding `wanted` (kStrong before
 // the flood, kKept after it), into xs; returns their number. Eight states
-// are tested at once, as one bit each of a word: most words hold none, and
-// a byte loop mispredicts on candidates as dense as these (one pixel in six
-// on aerial images).
+// are tested at once, as one bit each of a word. A byte loop mispredicts on
+// candidates as dense as these (one pixel in six of the bench's simulated
+// aerial scene).
 int CompactColumns(const std::uint8_t* state, std::uint8_t wanted, int* xs, int w) {
   static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "byte x + k is bits 8k .. 8k + 7");
   constexpr std::uint64_t kLow = 0x0101010101010101ull;
