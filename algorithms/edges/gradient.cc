@@ -33,7 +33,10 @@ inline PixelGradient GreyPixel(float dx, float dy) {
   return {std::sqrt(dx * dx + dy * dy), dx, dy, 0};
 }
 
-inline PixelGradient MaxPixel(float dx0, float dy0, float dx1, float dy1, float dx2, float dy2) {
+// The band with the largest squared norm (ties to the lower band): its
+// squared norm in m, its gradient, its index.
+inline PixelGradient StrongestBand(float dx0, float dy0, float dx1, float dy1, float dx2,
+                                   float dy2) {
   const float n0 = dx0 * dx0 + dy0 * dy0;
   const float n1 = dx1 * dx1 + dy1 * dy1;
   const float n2 = dx2 * dx2 + dy2 * dy2;
@@ -45,21 +48,20 @@ inline PixelGradient MaxPixel(float dx0, float dy0, float dx1, float dy1, float 
   best = two ? n2 : best;
   bx = two ? dx2 : bx;
   by = two ? dy2 : by;
-  return {std::sqrt(best), bx, by, two ? 2 : (one ? 1 : 0)};
+  return {best, bx, by, two ? 2 : (one ? 1 : 0)};
+}
+
+inline PixelGradient MaxPixel(float dx0, float dy0, float dx1, float dy1, float dx2, float dy2) {
+  PixelGradient p = StrongestBand(dx0, dy0, dx1, dy1, dx2, dy2);
+  p.m = std::sqrt(p.m);
+  return p;
 }
 
 inline PixelGradient DiZenzoPixel(float dx0, float dy0, float dx1, float dy1, float dx2,
                                   float dy2) {
   // Strongest band, for the sign of the eigenvector.
-  const float n0 = dx0 * dx0 + dy0 * dy0;
-  const float n1 = dx1 * dx1 + dy1 * dy1;
-  const float n2 = dx2 * dx2 + dy2 * dy2;
-  const bool one = n1 > n0;
-  float bx = one ? dx1 : dx0;
-  float by = one ? dy1 : dy0;
-  const bool two = n2 > (one ? n1 : n0);
-  bx = two ? dx2 : bx;
-  by = two ? dy2 : by;
+  const PixelGradient strongest = StrongestBand(dx0, dy0, dx1, dy1, dx2, dy2);
+  const float bx = strongest.gx, by = strongest.gy;
   // D = JᵀJ = [a b; b c]; largest eigenvalue and its eigenvector.
   const float a = dx0 * dx0 + dx1 * dx1 + dx2 * dx2;
   const float bxy = dx0 * dy0 + dx1 * dy1 + dx2 * dy2;
