@@ -168,10 +168,17 @@ std::vector<Building*> Building::Solids() {
 
 namespace {
 void MergeParts(Building* b) {
+  // The whole is LoD2 when any of its solids is (the evaluation counts it
+  // among the LoD2 buildings), LoD1 when all are.
+  bool any_lod2 = b->lod >= 2 && !b->surfaces.empty();
+  bool any_solid = !b->surfaces.empty();
   for (Building& p : b->parts) {
     MergeParts(&p);
+    any_solid |= !p.surfaces.empty();
+    any_lod2 |= p.lod >= 2 && !p.surfaces.empty();
     for (Surface& s : p.surfaces) b->surfaces.push_back(std::move(s));
   }
+  if (!b->parts.empty() && any_solid) b->lod = any_lod2 ? 2 : 1;
   b->parts.clear();
 }
 }  // namespace

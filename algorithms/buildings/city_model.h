@@ -63,6 +63,13 @@ struct Building {
   std::vector<Surface> surfaces;
   int roof_type = roof_type::kUnknown;
   double measured_height = 0;  // m, ground to highest roof point; 0 unknown
+  // Level of detail of the surfaces: 2 (the roof's own shape) or 1, a block
+  // model (the footprint extruded to one roof height, flat top), which the
+  // run writes over a footprint whose roof it could not reconstruct, as
+  // 3DBAG's LoD1.2. Written as lod1Solid (CityGML), "lod": "1" (CityJSON)
+  // and field `lod`; the evaluation leaves LoD1 buildings out of the LoD2
+  // figures. Parts share their building's.
+  int lod = 2;
   // Generic attributes (quality figures, source ids): written as gen:* in
   // CityGML, attributes in CityJSON and fields in GeoPackage.
   std::map<std::string, double> double_attributes;

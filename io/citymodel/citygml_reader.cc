@@ -64,15 +64,16 @@ Polygon3 ToPolygon(const citygml::Polygon& p) {
   return out;
 }
 
-// All LoD2 polygons of a geometry tree (a Solid's polygons sit in nested
-// geometries after xlink resolution).
-void CollectPolygons(const citygml::Geometry& g, std::vector<Polygon3>* out) {
-  if (g.getLOD() == 2 || g.getLOD() == 0)
+// All polygons of level of detail `lod` in a geometry tree (a Solid's
+// polygons sit in nested geometries after xlink resolution); LoD2 also
+// takes geometries without a level (0).
+void CollectPolygons(const citygml::Geometry& g, std::vector<Polygon3>* out, unsigned lod = 2) {
+  if (g.getLOD() == lod || (lod == 2 && g.getLOD() == 0))
     for (unsigned i = 0; i < g.getPolygonsCount(); ++i) {
       Polygon3 p = ToPolygon(*g.getPolygon(i));
       if (p.exterior.size() >= 3) out->push_back(std::move(p));
     }
-  for (unsigned i = 0; i < g.getGeometriesCount(); ++i) CollectPolygons(g.getGeometry(i), out);
+  for (unsigned i = 0; i < g.getGeometriesCount(); ++i) CollectPolygons(g.getGeometry(i), out, lod);
 }
 
 bool SurfaceTypeOf(COT t, SurfaceType* out) {
@@ -115,12 +116,13 @@ int AddThematicSurfaces(const citygml::CityObject& obj, Building* b) {
   return n;
 }
 
-// A building modelled only as lod2Solid/lod2MultiSurface has no semantics;
-// the normal decides (cos 0.1 ~ 84 degrees keeps steep roofs roofs).
-void AddUnclassifiedSurfaces(const citygml::CityObject& obj, Building* b) {
+// A building modelled only as lod2Solid/lod2MultiSurface (or, `lod` 1, as
+// an LoD1 block) has no semantics; the normal decides (cos 0.1 ~ 84 degrees
+// keeps steep roofs roofs).
+void AddUnclassifiedSurfaces(const citygml::CityObject& obj, Building* b, unsigned lod = 2) {
   std::vector<Polygon3> polys;
   for (unsigned g = 0; g < obj.getGeometriesCount(); ++g)
-    CollectPolygons(obj.getGeometry(g), &polys);
+    CollectPolygons(obj.getGeometry(g), &polys, lod);
   for (auto& p : polys) {
     const double nz = p.Normal().z();
     Surface s;
@@ -155,6 +157,13 @@ Building ReadBuildingObject(const citygml::CityObject& obj) {
   for (unsigned i = 0; i < obj.getChildCityObjectsCount(); ++i)
     if (obj.getChildCityObject(i).getType() == COT::COT_BuildingPart)
       b.parts.push_back(ReadBuildingObject(obj.getChildCityObject(i)));
+  // LoD2 wins where a building has both; an LoD1 block is read only when
+  // neither it nor a part has LoD2 geometry (roofsweep's fallback blocks,
+  // LoD1 city models).
+  if (b.Solids().empty()) {
+    AddUnclassifiedSurfaces(obj, &b, 1);
+    if (!b.surfaces.empty()) b.lod = 1;
+  }
   return b;
 }
 

@@ -165,7 +165,23 @@ void CityGmlWriter::WriteObject(const Building& b, const char* element,
     for (size_t pi = 0; pi < b.surfaces[si].polygons.size(); ++pi)
       polygon_ids[si].push_back(bid + "_poly_" + std::to_string(poly_counter++));
   }
-  if (poly_counter > 0) {
+  if (poly_counter > 0 && b.lod == 1) {
+    // LoD1 has no thematic surfaces in CityGML 2.0 (_BoundarySurface
+    // carries lod2-4 geometry only): the block is one solid of its
+    // polygons, written inline.
+    xmlTextWriterStartElement(writer_, X("bldg:lod1Solid"));
+    xmlTextWriterStartElement(writer_, X("gml:Solid"));
+    xmlTextWriterStartElement(writer_, X("gml:exterior"));
+    xmlTextWriterStartElement(writer_, X("gml:CompositeSurface"));
+    for (size_t si = 0; si < b.surfaces.size(); ++si)
+      for (size_t pi = 0; pi < b.surfaces[si].polygons.size(); ++pi)
+        WriteSurfaceMember(b.surfaces[si].polygons[pi], polygon_ids[si][pi],
+                           "building " + bid + " surface " + surface_ids[si]);
+    xmlTextWriterEndElement(writer_);
+    xmlTextWriterEndElement(writer_);
+    xmlTextWriterEndElement(writer_);
+    xmlTextWriterEndElement(writer_);
+  } else if (poly_counter > 0) {
     xmlTextWriterStartElement(writer_, X("bldg:lod2Solid"));
     xmlTextWriterStartElement(writer_, X("gml:Solid"));
     xmlTextWriterStartElement(writer_, X("gml:exterior"));
@@ -180,50 +196,23 @@ void CityGmlWriter::WriteObject(const Building& b, const char* element,
     xmlTextWriterEndElement(writer_);
     xmlTextWriterEndElement(writer_);
     xmlTextWriterEndElement(writer_);
-  }
 
-  for (size_t si = 0; si < b.surfaces.size(); ++si) {
-    const Surface& s = b.surfaces[si];
-    const std::string type = std::string("bldg:") + SurfaceTypeName(s.type);
-    xmlTextWriterStartElement(writer_, X("bldg:boundedBy"));
-    xmlTextWriterStartElement(writer_, X(type.c_str()));
-    xmlTextWriterWriteAttribute(writer_, X("gml:id"), X(surface_ids[si].c_str()));
-    xmlTextWriterStartElement(writer_, X("bldg:lod2MultiSurface"));
-    xmlTextWriterStartElement(writer_, X("gml:MultiSurface"));
-    for (size_t pi = 0; pi < s.polygons.size(); ++pi) {
-      const Polygon3& p = s.polygons[pi];
-      xmlTextWriterStartElement(writer_, X("gml:surfaceMember"));
-      xmlTextWriterStartElement(writer_, X("gml:Polygon"));
-      xmlTextWriterWriteAttribute(writer_, X("gml:id"), X(polygon_ids[si][pi].c_str()));
-      for (size_t r = 0; r <= p.holes.size(); ++r) {
-        const auto& ring = r == 0 ? p.exterior : p.holes[r - 1];
-        if (ring.empty())
-          throw Error(AtLine(file_.path(), 0,
-                             "building " + bid + " surface " + surface_ids[si] + ": empty ring"));
-        buffer_.clear();
-        for (size_t k = 0; k <= ring.size(); ++k) {  // repeats the first point
-          const Eigen::Vector3d& v = ring[k % ring.size()];
-          for (int c = 0; c < 3; ++c) {
-            if (!buffer_.empty()) buffer_ += ' ';
-            AppendNumber(&buffer_, v[c], decimals_);
-          }
-        }
-        xmlTextWriterStartElement(writer_, X(r == 0 ? "gml:exterior" : "gml:interior"));
-        xmlTextWriterStartElement(writer_, X("gml:LinearRing"));
-        xmlTextWriterStartElement(writer_, X("gml:posList"));
-        xmlTextWriterWriteAttribute(writer_, X("srsDimension"), X("3"));
-        xmlTextWriterWriteString(writer_, X(buffer_.c_str()));
-        xmlTextWriterEndElement(writer_);
-        xmlTextWriterEndElement(writer_);
-        xmlTextWriterEndElement(writer_);
-      }
-      xmlTextWriterEndElement(writer_);  // Polygon
-      xmlTextWriterEndElement(writer_);  // surfaceMember
+    for (size_t si = 0; si < b.surfaces.size(); ++si) {
+      const Surface& s = b.surfaces[si];
+      const std::string type = std::string("bldg:") + SurfaceTypeName(s.type);
+      xmlTextWriterStartElement(writer_, X("bldg:boundedBy"));
+      xmlTextWriterStartElement(writer_, X(type.c_str()));
+      xmlTextWriterWriteAttribute(writer_, X("gml:id"), X(surface_ids[si].c_str()));
+      xmlTextWriterStartElement(writer_, X("bldg:lod2MultiSurface"));
+      xmlTextWriterStartElement(writer_, X("gml:MultiSurface"));
+      for (size_t pi = 0; pi < s.polygons.size(); ++pi)
+        WriteSurfaceMember(s.polygons[pi], polygon_ids[si][pi],
+                           "building " + bid + " surface " + surface_ids[si]);
+      xmlTextWriterEndElement(writer_);  // MultiSurface
+      xmlTextWriterEndElement(writer_);  // lod2MultiSurface
+      xmlTextWriterEndElement(writer_);  // *Surface
+      xmlTextWriterEndElement(writer_);  // boundedBy
     }
-    xmlTextWriterEndElement(writer_);  // MultiSurface
-    xmlTextWriterEndElement(writer_);  // lod2MultiSurface
-    xmlTextWriterEndElement(writer_);  // *Surface
-    xmlTextWriterEndElement(writer_);  // boundedBy
   }
   // The XSD's sequence puts the parts after boundedBy (and before address).
   for (size_t k = 0; k < b.parts.size(); ++k) {
@@ -232,6 +221,35 @@ void CityGmlWriter::WriteObject(const Building& b, const char* element,
     xmlTextWriterEndElement(writer_);
   }
   xmlTextWriterEndElement(writer_);  // Building or BuildingPart
+}
+
+void CityGmlWriter::WriteSurfaceMember(const Polygon3& p, const std::string& id,
+                                       const std::string& context) {
+  xmlTextWriterStartElement(writer_, X("gml:surfaceMember"));
+  xmlTextWriterStartElement(writer_, X("gml:Polygon"));
+  xmlTextWriterWriteAttribute(writer_, X("gml:id"), X(id.c_str()));
+  for (size_t r = 0; r <= p.holes.size(); ++r) {
+    const auto& ring = r == 0 ? p.exterior : p.holes[r - 1];
+    if (ring.empty()) throw Error(AtLine(file_.path(), 0, context + ": empty ring"));
+    buffer_.clear();
+    for (size_t k = 0; k <= ring.size(); ++k) {  // repeats the first point
+      const Eigen::Vector3d& v = ring[k % ring.size()];
+      for (int c = 0; c < 3; ++c) {
+        if (!buffer_.empty()) buffer_ += ' ';
+        AppendNumber(&buffer_, v[c], decimals_);
+      }
+    }
+    xmlTextWriterStartElement(writer_, X(r == 0 ? "gml:exterior" : "gml:interior"));
+    xmlTextWriterStartElement(writer_, X("gml:LinearRing"));
+    xmlTextWriterStartElement(writer_, X("gml:posList"));
+    xmlTextWriterWriteAttribute(writer_, X("srsDimension"), X("3"));
+    xmlTextWriterWriteString(writer_, X(buffer_.c_str()));
+    xmlTextWriterEndElement(writer_);
+    xmlTextWriterEndElement(writer_);
+    xmlTextWriterEndElement(writer_);
+  }
+  xmlTextWriterEndElement(writer_);  // Polygon
+  xmlTextWriterEndElement(writer_);  // surfaceMember
 }
 
 void CityGmlWriter::End() {

@@ -33,6 +33,9 @@ class CityGmlWriter final : public CityModelStreamWriter {
  private:
   // A Building or BuildingPart (`element`) with its parts.
   void WriteObject(const Building& b, const char* element, const std::string& fallback_id);
+  // One gml:surfaceMember holding the polygon (with its gml:id);
+  // `context` names the building and surface in the error on an empty ring.
+  void WriteSurfaceMember(const Polygon3& p, const std::string& id, const std::string& context);
   std::string UniqueId(const std::string& wanted, const std::string& fallback);
   bool Taken(const std::string& id) const;
   void Check(int rc, const char* what);

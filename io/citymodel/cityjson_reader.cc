@@ -98,23 +98,26 @@ class BuildingReader {
     }
   }
 
-  // Appends the LoD2 surfaces of `obj` to `b`.
+  // Appends the surfaces of the first LoD2 geometry of `obj` to `b`; with
+  // none, those of the first LoD1 geometry (a block model), and b->lod = 1.
   void ReadGeometry(const json& obj, const std::string& ptr, Building* b) const {
     if (!obj.contains("geometry")) return;
     const json& geoms = obj["geometry"];
     if (!geoms.is_array()) ctx_.Fail(ptr + "/geometry", "expected an array");
-    for (size_t gi = 0; gi < geoms.size(); ++gi) {
-      const json& g = geoms[gi];
-      const std::string gp = ptr + "/geometry/" + std::to_string(gi);
-      if (!g.is_object() || !g.contains("type") || !g["type"].is_string())
-        ctx_.Fail(gp, "geometry without a type");
-      std::string lod;
-      if (g.contains("lod"))
-        lod = g["lod"].is_string() ? g["lod"].get<std::string>() : g["lod"].dump();
-      if (lod.empty() || lod[0] != '2') continue;
-      ReadOneGeometry(g, gp, b);
-      return;  // the first LoD2 geometry wins
-    }
+    for (const char wanted : {'2', '1'})
+      for (size_t gi = 0; gi < geoms.size(); ++gi) {
+        const json& g = geoms[gi];
+        const std::string gp = ptr + "/geometry/" + std::to_string(gi);
+        if (!g.is_object() || !g.contains("type") || !g["type"].is_string())
+          ctx_.Fail(gp, "geometry without a type");
+        std::string lod;
+        if (g.contains("lod"))
+          lod = g["lod"].is_string() ? g["lod"].get<std::string>() : g["lod"].dump();
+        if (lod.empty() || lod[0] != wanted) continue;
+        ReadOneGeometry(g, gp, b);
+        b->lod = wanted - '0';
+        return;
+      }
   }
 
  private:

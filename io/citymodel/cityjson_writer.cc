@@ -95,7 +95,7 @@ struct CityJsonWriter::State {
     } else {
       obj["geometry"] = json::array(
           {{{"type", "Solid"},
-            {"lod", "2"},
+            {"lod", b.lod == 1 ? "1" : "2"},
             {"boundaries", json::array({shell})},
             {"semantics", {{"surfaces", surfaces}, {"values", json::array({values})}}}}});
     }

@@ -39,10 +39,19 @@ class QuietGdal {
   }
 };
 
-const char* kReserved[] = {
-    "id",         "roof_type",       "roof_type_name", "measured_height", "building_id",
-    "surface_id", "surface_type",    "surface_index",  "building_index",  "fid",
-    "geom",       "building_part_id"};
+const char* kReserved[] = {"id",
+                           "roof_type",
+                           "roof_type_name",
+                           "measured_height",
+                           "building_id",
+                           "surface_id",
+                           "surface_type",
+                           "surface_index",
+                           "building_index",
+                           "fid",
+                           "geom",
+                           "building_part_id",
+                           "lod"};
 
 bool IsReserved(const std::string& name) {
   for (const char* r : kReserved)
@@ -405,6 +414,7 @@ OgrCityModelWriter::Layer& OgrCityModelWriter::MakeLayer(const std::string& name
     field("roof_type", OFTInteger);
     field("roof_type_name", OFTString);
     field("measured_height", OFTReal);
+    field("lod", OFTInteger);
     if (options_.check_geometry) field(kValidityAttribute, OFTString);
     for (const auto& [k, is_double] : declared_) EnsureField(*l, k, is_double);
   }
@@ -456,6 +466,7 @@ void OgrCityModelWriter::Write(const Building& b) {
       f.SetField("roof_type_name", RoofTypeName(o.roof_type));
     }
     if (o.measured_height > 0) f.SetField("measured_height", o.measured_height);
+    f.SetField("lod", o.lod);
     for (const auto& [k, v] : o.double_attributes) f.SetField(k.c_str(), v);
     for (const auto& [k, v] : strings) f.SetField(k.c_str(), v.c_str());
   };
@@ -583,6 +594,8 @@ CityModel ReadOgrCityModel(const std::string& path) {
         b.roof_type = f.GetFieldAsInteger(i);
       } else if (name == "measured_height") {
         b.measured_height = f.GetFieldAsDouble(i);
+      } else if (name == "lod") {
+        b.lod = f.GetFieldAsInteger(i) == 1 ? 1 : 2;
       } else if (IsReserved(name)) {
         continue;
       } else if (defn->GetFieldDefn(i)->GetType() == OFTReal ||

@@ -21,6 +21,7 @@ namespace roofsweep {
 // the CRS is compound), with a spatial index:
 //   buildings        footprint = the ground surfaces (of all its parts);
 //                    id, roof_type, roof_type_name, measured_height,
+//                    lod (2; 1 for a block model, Building::lod),
 //                    roofsweep_validity and one field per generic attribute
 //   building_parts   (only when a building has parts) the same per part,
 //                    with building_id

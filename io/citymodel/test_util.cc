@@ -83,6 +83,7 @@ void ExpectBuildingsNear(const Building& a, const Building& b, bool surface_ids,
   SCOPED_TRACE("building " + a.id);
   EXPECT_EQ(a.id, b.id);
   EXPECT_EQ(a.roof_type, b.roof_type);
+  EXPECT_EQ(a.lod, b.lod);
   EXPECT_NEAR(a.measured_height, b.measured_height, 1e-3);
   for (const auto& [k, v] : a.double_attributes) {
     auto it = b.double_attributes.find(k);
