@@ -146,4 +146,20 @@ bool RingSelfIntersects(const Ring2& r, std::pair<size_t, size_t>* edges) {
   return false;
 }
 
+bool InsideRing(const Ring2& r, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+        p.x() < r[j].x() + (p.y() - r[j].y()) * (r[i].x() - r[j].x()) / (r[i].y() - r[j].y()))
+      in = !in;
+  return in;
+}
+
+double DistanceToRing(const Ring2& r, const Eigen::Vector2d& p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    d = std::min(d, PointSegmentDistance(p, r[j], r[i]));
+  return d;
+}
+
 }  // namespace roofsweep

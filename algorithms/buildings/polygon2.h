@@ -30,6 +30,12 @@ double IntersectionArea(const Ring2& a, const Ring2& b);
 // empty when they do not overlap.
 Ring2 LargestIntersection(const Ring2& a, const Ring2& b);
 
+// True when p lies inside the ring (even-odd rule: either orientation,
+// not necessarily convex; InsideConvex assumes a convex ring).
+bool InsideRing(const Ring2& ring, const Eigen::Vector2d& p);
+// Plan distance from p to the ring's edges (infinity for an empty ring).
+double DistanceToRing(const Ring2& ring, const Eigen::Vector2d& p);
+
 // True when the ring (either orientation) turns one way only (collinear
 // vertices allowed).
 bool IsConvexRing(const Ring2& ring);

@@ -7,6 +7,7 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint_completion.h"
+#include "algorithms/buildings/polygon2.h"
 #include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
@@ -22,24 +23,6 @@ ModelHeightSearch SearchOf(const RoofModel& m, double lo, double hi) {
   return h;
 }
 
-// Even-odd rule: footprints need not be convex (InsideConvex assumes
-// convex rings).
-bool InsideOutline(const Ring2& r, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
-        p.x() < r[j].x() + (p.y() - r[j].y()) * (r[i].x() - r[j].x()) / (r[i].y() - r[j].y()))
-      in = !in;
-  return in;
-}
-
-double DistanceToOutline(const Ring2& r, const Eigen::Vector2d& p) {
-  double d = std::numeric_limits<double>::infinity();
-  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-    d = std::min(d, PointSegmentDistance(p, r[j], r[i]));
-  return d;
-}
-
 }  // namespace
 
 std::pair<double, double> LineHeightSpan(const Ring2& outline, const std::vector<Segment3>& lines,
@@ -49,7 +32,7 @@ std::pair<double, double> LineHeightSpan(const Ring2& outline, const std::vector
   if (outline.size() < 3) return span;
   auto over = [&](const Eigen::Vector3d& x) {
     const Eigen::Vector2d q = x.head<2>();
-    return InsideOutline(outline, q) || DistanceToOutline(outline, q) <= margin_m;
+    return InsideRing(outline, q) || DistanceToRing(outline, q) <= margin_m;
   };
   for (const Segment3& l : lines) {
     if (!(l.a.z() > z_min && l.b.z() > z_min) || !over(l.a) || !over(l.b)) continue;

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "algorithms/buildings/lod1_block.h"
 #include "algorithms/core/error.h"
 #include "algorithms/core/progress.h"
 #include "io/citymodel/procedural_buildings.h"
@@ -100,6 +101,44 @@ TEST(CityModelIo, BuildingPartsRoundTripThroughEveryFormat) {
   EXPECT_TRUE(flat.buildings[1].parts.empty());
   EXPECT_EQ(flat.buildings[1].surfaces.size(),
             m.buildings[1].parts[0].surfaces.size() + m.buildings[1].parts[1].surfaces.size());
+}
+
+// An LoD1 block beside LoD2 buildings stays LoD1 in every format: a
+// lod1Solid of plain polygons in CityGML (LoD1 has no thematic surfaces),
+// "lod": "1" in CityJSON, field lod in the OGR layers; the files stay valid.
+TEST(CityModelIo, Lod1BlocksRoundTripThroughEveryFormat) {
+  const std::string dir = testing::TempDir("io");
+  CityModel m = testing::MakeCity(3);
+  // Beside the others, at their coordinates' magnitude (MakeCity's origin).
+  const Eigen::Vector3d at = m.buildings[0].surfaces[0].polygons[0].exterior[0];
+  Ring2 l_shape = {{0, 0}, {12, 0}, {12, 5}, {5, 5}, {5, 10}, {0, 10}};
+  for (auto& p : l_shape) p += at.head<2>() + Eigen::Vector2d(60.0037, 0.0041);
+  Building block = Lod1Block(l_shape, at.z(), at.z() + 7.5);
+  block.id = "rs_l0001";
+  block.string_attributes["footprint_id"] = "DEBE9";
+  block.string_attributes["lod1_reason"] = "no roof plane found over it";
+  m.buildings.insert(m.buildings.begin() + 1, block);
+  for (const char* out : {"l.gml", "l.city.json", "l.city.jsonl", "l.gpkg", "l.fgb"}) {
+    SCOPED_TRACE(out);
+    WriteCityModel(m, dir + "/" + out);
+    const CityModel r = ReadCityModel(dir + "/" + out);
+    testing::ExpectModelsNear(m, r, 1e-3);
+    ASSERT_EQ(r.buildings.size(), 4u);
+    EXPECT_EQ(r.buildings[1].lod, 1);
+    EXPECT_EQ(r.buildings[2].lod, 2);
+    EXPECT_EQ(r.buildings[1].string_attributes.at("roofsweep_validity"), "valid");
+  }
+  std::string log;
+  const int rc = testing::XmllintCityGml(dir + "/l.gml", &log);
+  if (rc >= 0) {
+    EXPECT_EQ(rc, 0) << log;
+  }
+  const std::string gml = testing::ReadText(dir + "/l.gml");
+  EXPECT_NE(gml.find("bldg:lod1Solid"), std::string::npos);
+  const int cj = testing::ValidateCityJson(testing::ReadText(dir + "/l.city.json"), false, &log);
+  if (cj >= 0) {
+    EXPECT_EQ(cj, 0) << log;
+  }
 }
 
 TEST(CityModelIo, RealBerlinTileConvertsToEveryFormat) {
