@@ -261,4 +261,33 @@ nlohmann::json ToJson(const EvalResult& r) {
   return j;
 }
 
+std::string FormatLod1Table(const Lod1Scores& s) {
+  Table t;
+  t.Section("LoD1 blocks (footprints without an LoD2 roof; left out of the figures above)");
+  t.Row("blocks", std::to_string(s.blocks),
+        Of(s.over_reference, s.blocks) + " over a reference building");
+  t.Row("found at LoD2 or as a block", Pct(s.found_fraction),
+        Of(s.found, s.n_reference) + " reference, " + std::to_string(s.found_by_block_only) +
+            " as a block only");
+  t.Row("block top RMSZ", Fmt(s.rmsz_m, "%.3f m"),
+        s.cells > 0 ? std::to_string(s.cells) + " cells, mean " + Fmt(s.dz_mean_m, "%+.2f m")
+                    : std::string());
+  t.Row("at the roofs' mean heights", Fmt(s.rmsz_at_mean_m, "%.3f m"),
+        "the least a flat block can reach");
+  return t.str();
+}
+
+nlohmann::json Lod1ToJson(const Lod1Scores& s) {
+  return {{"blocks", s.blocks},
+          {"over_reference", s.over_reference},
+          {"n_reference", s.n_reference},
+          {"found", s.found},
+          {"found_by_block_only", s.found_by_block_only},
+          {"found_fraction", Num(s.found_fraction)},
+          {"cells", s.cells},
+          {"rmsz_m", Num(s.rmsz_m)},
+          {"dz_mean_m", Num(s.dz_mean_m)},
+          {"rmsz_at_mean_m", Num(s.rmsz_at_mean_m)}};
+}
+
 }  // namespace roofsweep

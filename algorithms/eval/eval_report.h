@@ -4,6 +4,7 @@
 #include <string>
 
 #include "algorithms/eval/evaluate.h"
+#include "algorithms/eval/lod1_eval.h"
 
 namespace roofsweep {
 
@@ -23,5 +24,11 @@ std::string FormatTable(const EvalResult& result);
 // lines3d.{evaluated, precision, completeness, roof_edge_completeness, ...},
 // input.{result, reference}, options.
 nlohmann::json ToJson(const EvalResult& result);
+
+// The LoD1 blocks' section of the table, and its JSON (blocks,
+// over_reference, found, found_by_block_only, found_fraction, n_reference,
+// cells, rmsz_m, dz_mean_m, rmsz_at_mean_m).
+std::string FormatLod1Table(const Lod1Scores& scores);
+nlohmann::json Lod1ToJson(const Lod1Scores& scores);
 
 }  // namespace roofsweep

@@ -320,22 +320,13 @@ void ScoreGeometry(const eval::RoofPlaneSet& res, const eval::RoofPlaneSet& ref,
 
 void ScoreHeights(const CityModel& result, const CityModel& truth, const EvalOptions& o,
                   GeometryScores* g) {
-  const auto a = result.Bounds(), b = truth.Bounds();
-  const double x0 = std::min(a(0), b(0)), y0 = std::min(a(1), b(1));
-  const double x1 = std::max(a(3), b(3)), y1 = std::max(a(4), b(4));
-  if (!std::isfinite(x0) || !std::isfinite(x1)) return;
-  // Grid aligned to multiples of the cell so the sampling does not depend on
-  // which model reaches furthest.
   const double c = o.rmsz_grid_m;
-  const Eigen::Vector2d origin(std::floor(x0 / c) * c, std::floor(y0 / c) * c);
-  const double cols_d = std::ceil((x1 - origin.x()) / c) + 1;
-  const double rows_d = std::ceil((y1 - origin.y()) / c) + 1;
-  if (cols_d * rows_d > 4e8)
-    throw Error("RMSZ grid of " + std::to_string(static_cast<long long>(cols_d * rows_d)) +
-                " cells is too large; use a larger rmsz_grid_m");
-  const int cols = static_cast<int>(cols_d), rows = static_cast<int>(rows_d);
-  const auto gr = eval::RasteriseRoofs(result, origin, c, cols, rows, o.planes.vertical_roof_deg);
-  const auto gt = eval::RasteriseRoofs(truth, origin, c, cols, rows, o.planes.vertical_roof_deg);
+  const std::optional<eval::GridSpan> span = eval::SpanGrid(result, truth, c);
+  if (!span) return;
+  const auto gr = eval::RasteriseRoofs(result, span->origin, c, span->cols, span->rows,
+                                       o.planes.vertical_roof_deg);
+  const auto gt = eval::RasteriseRoofs(truth, span->origin, c, span->cols, span->rows,
+                                       o.planes.vertical_roof_deg);
   const auto h = eval::CompareHeights(gr, gt);
   g->rmsz_cells = h.cells_both;
   g->rmsz_cells_result_only = h.cells_result;

@@ -115,4 +115,21 @@ HeightComparison CompareHeights(const RoofHeightGrid& result, const RoofHeightGr
   return h;
 }
 
+std::optional<GridSpan> SpanGrid(const CityModel& a, const CityModel& b, double c) {
+  const auto ba = a.Bounds(), bb = b.Bounds();
+  const double x0 = std::min(ba(0), bb(0)), y0 = std::min(ba(1), bb(1));
+  const double x1 = std::max(ba(3), bb(3)), y1 = std::max(ba(4), bb(4));
+  if (!std::isfinite(x0) || !std::isfinite(x1)) return std::nullopt;
+  GridSpan g;
+  g.origin = Eigen::Vector2d(std::floor(x0 / c) * c, std::floor(y0 / c) * c);
+  const double cols_d = std::ceil((x1 - g.origin.x()) / c) + 1;
+  const double rows_d = std::ceil((y1 - g.origin.y()) / c) + 1;
+  if (cols_d * rows_d > 4e8)
+    throw Error("RMSZ grid of " + std::to_string(static_cast<long long>(cols_d * rows_d)) +
+                " cells is too large; use a larger rmsz_grid_m");
+  g.cols = static_cast<int>(cols_d);
+  g.rows = static_cast<int>(rows_d);
+  return g;
+}
+
 }  // namespace roofsweep::eval

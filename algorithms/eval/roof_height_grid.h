@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "algorithms/buildings/city_model.h"
@@ -19,6 +20,16 @@ struct RoofHeightGrid {
 
   float At(int col, int row) const { return z[static_cast<size_t>(row) * cols + col]; }
 };
+
+// The grid over both models' bounds, its origin aligned to multiples of
+// the cell so that the sampling does not depend on which model reaches
+// furthest; nullopt when either model is empty. Throws roofsweep::Error
+// beyond 4e8 cells.
+struct GridSpan {
+  Eigen::Vector2d origin{0, 0};
+  int cols = 0, rows = 0;
+};
+std::optional<GridSpan> SpanGrid(const CityModel& a, const CityModel& b, double cell);
 
 // Rasterises the non-vertical roof polygons of `model` onto the grid spanned
 // by `origin`, `cell` and the size. Roof polygons steeper than

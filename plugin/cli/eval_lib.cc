@@ -73,6 +73,8 @@ EvalReport RunEval(const EvalRequest& r) {
   // (Evaluate would merge them itself; the plane losses index its buildings).
   MergeBuildingParts(&result);
   MergeBuildingParts(&truth);
+  // LoD1 blocks are scored apart: they are not LoD2 models.
+  CityModel blocks = TakeLod1Buildings(&result);
   CheckSameCrs(result.crs, r.result, truth.crs, truth_path);
   if (truth.buildings.empty()) throw Error(truth_path + ": the ground truth has no buildings");
 
@@ -82,6 +84,7 @@ EvalReport RunEval(const EvalRequest& r) {
   // geometry works on coordinates relative to a common origin.
   const auto shift = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(v - origin); };
   result.TransformVertices(shift);
+  blocks.TransformVertices(shift);
   truth.TransformVertices(shift);
 
   std::vector<Segment3> lines, extra, clutter;
@@ -123,6 +126,11 @@ EvalReport RunEval(const EvalRequest& r) {
                            extra.empty() ? nullptr : &extra, clutter.empty() ? nullptr : &clutter);
   report.table = FormatTable(report.result);
   report.json = ToJson(report.result);
+  if (!blocks.buildings.empty()) {
+    const Lod1Scores lod1 = EvaluateLod1(blocks, truth, report.result, options);
+    report.table += FormatLod1Table(lod1);
+    report.json["lod1"] = Lod1ToJson(lod1);
+  }
   if (!r.planes.empty()) {
     PlaneHypothesisSet hyps = ReadPlaneHypotheses(r.planes);
     CheckSameCrs(hyps.crs, r.planes, truth.crs, truth_path);
