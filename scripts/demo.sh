@@ -28,7 +28,8 @@ echo "== 5. quality against the ground truth (plan-view overlay: $OUT/eval.png)"
 "$RS" eval "$OUT/buildings.gml" "$OUT/block" -lines "$OUT/lines3d.gpkg" -png "$OUT/eval.png" -overwrite
 
 echo "== 6. the same with building footprints (as from a cadastre: the simulator's footprints.gpkg)"
-echo "   -> $OUT/buildings_footprints.gpkg: walls on the footprints, buildings labelled footprint_id"
+echo "   -> $OUT/buildings_footprints.gpkg: walls on the footprints, buildings labelled footprint_id,"
+echo "      an LoD1 block (lod = 1) over a footprint whose roof was not reconstructed"
 "$RS" run "$OUT/block" -lines "$OUT/lines3d.gpkg" -footprints "$OUT/block/footprints.gpkg" \
   -o "$OUT/buildings_footprints.gpkg" -report "$OUT/run_report_footprints.json" -overwrite
 "$RS" eval "$OUT/buildings_footprints.gpkg" "$OUT/block" -png "$OUT/eval_footprints.png" -overwrite

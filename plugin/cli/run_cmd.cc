@@ -33,7 +33,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
-       no_lift = false, flat_only = false, no_beyond = false, no_pieces = false;
+       no_lift = false, flat_only = false, no_beyond = false, no_pieces = false, no_lod1 = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -113,6 +113,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-min_edge_support", &r.min_edge_support, "F",
               "drop buildings with less than this share of their visible roof-edge length on an "
               "image edge (attribute edge_support; default 0: keep all)")
+      .Flag("-no_lod1", &no_lod1,
+            "with footprints, leave out a footprint whose roof was not reconstructed (with its "
+            "reason) instead of writing an LoD1 block over it at the height of the 3D lines "
+            "over it (lod 1, attribute lod1_reason)")
       .Flag("-no_eave_filter", &keep_eave_planes,
             "keep flat planes that only continue the eaves of sloped faces outwards (the yard "
             "in the inner corner of an L-shaped house, joined from its two eaves)")
@@ -140,6 +144,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.footprint_pieces = !no_pieces;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;
+  r.lod1_fallback = !no_lod1;
   flags.Apply(p);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {

@@ -217,9 +217,14 @@ std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& ima
     if (std::isfinite(f)) {
       b.double_attributes["edge_support"] = f;
       if (f < r.min_edge_support) {
+        // With footprints every reason is the footprint's, as the
+        // assembly's are (and the LoD1 fallback finds it).
+        const auto fp = b.string_attributes.find("footprint_id");
         const std::string why =
-            "building " + b.id + ": " +
-            StrFormat("roof edges on image edges %.2f < %.2f", f, r.min_edge_support);
+            (fp != b.string_attributes.end()
+                 ? "footprint " + fp->second + " (building " + b.id + ")"
+                 : "building " + b.id) +
+            ": " + StrFormat("roof edges on image edges %.2f < %.2f", f, r.min_edge_support);
         rejected->push_back(why);
         dropped[b.id] = why;
         for (const Building* s : b.Solids()) dropped[s->id] = why;
@@ -842,6 +847,17 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   t0 = Clock::now();
   const std::string support_result = ApplyEdgeSupport(block, images, r, &assembled, &out.rejected);
   const RunStage support_stage{"edge support", support_result, Since(t0)};
+  std::optional<RunStage> lod1_stage;
+  if (!footprints.empty() && r.lod1_fallback) {
+    t0 = Clock::now();
+    std::vector<Segment3> segments;
+    for (const Line3D& l : matched.lines) segments.push_back(l.segment);
+    const Lod1Counts n = AddLod1Blocks(footprints, block.ground, block.max_building_height,
+                                       segments, r.lod1, &assembled.model, &out.rejected);
+    lod1_stage = RunStage{
+        "LoD1 blocks",
+        StrFormat("%d of %d footprints without a roof", n.blocks, n.footprints_without), Since(t0)};
+  }
   std::optional<RunStage> tile_stage;
   if (manifest.aoi) {
     const size_t before = assembled.model.buildings.size();
@@ -855,32 +871,45 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
         0.0};
   }
   out.buildings = static_cast<int>(assembled.model.buildings.size());
-  for (const Building& b : assembled.model.buildings)
-    out.solids += static_cast<int>(b.Solids().size());
+  int lod2_solids = 0;
+  for (const Building& b : assembled.model.buildings) {
+    const int n = static_cast<int>(b.Solids().size());
+    out.solids += n;
+    if (b.lod == 1)
+      ++out.lod1_buildings;
+    else
+      lod2_solids += n;
+  }
+  const int lod2_buildings = out.buildings - out.lod1_buildings;
   if (trace)
     WritePlaneLayer(r.planes, traces, roof_planes, assembled, out.rejected, frame, manifest.crs,
                     r.overwrite);
   out.stages.push_back(
       {"LoD2 buildings",
-       StrFormat("%d of %d hypotheses, %d planes used", out.solids, assembled.hypotheses,
+       StrFormat("%d of %d hypotheses, %d planes used", lod2_solids, assembled.hypotheses,
                  assembled.planes_used) +
-           (out.solids != out.buildings
+           (lod2_solids != lod2_buildings
                 ? StrFormat(footprints.empty()
                                 ? ", %d buildings (the solids of one adjacent group are its parts)"
                                 : ", %d buildings (the solids over one footprint are its parts)",
-                            out.buildings)
+                            lod2_buildings)
                 : std::string()) +
            (assembled.party_cuts > 0 ? StrFormat(", %d cut at party walls", assembled.party_cuts)
                                      : std::string()),
        assembly_seconds});
   out.stages.push_back(support_stage);
+  if (lod1_stage) out.stages.push_back(*lod1_stage);
   if (tile_stage) out.stages.push_back(*tile_stage);
 
   t0 = Clock::now();
   CityModel model = std::move(assembled.model);
   model.TransformVertices([&](const Eigen::Vector3d& v) { return frame.ToCrs(v); });
   WriteRunOutput(std::move(model), manifest.crs, r);
-  out.stages.push_back({"write", StrFormat("%d buildings", out.buildings), Since(t0)});
+  out.stages.push_back({"write",
+                        out.lod1_buildings > 0 ? StrFormat("%d buildings, %d of them LoD1",
+                                                           out.buildings, out.lod1_buildings)
+                                               : StrFormat("%d buildings", out.buildings),
+                        Since(t0)});
   if (!r.report.empty()) WriteReport(r.report, out);
   progress.Update(1.0, "done");
   return out;

@@ -8,6 +8,7 @@
 #include "algorithms/buildings/assemble_buildings.h"
 #include "algorithms/buildings/footprint_growth.h"
 #include "algorithms/buildings/footprint_roofs.h"
+#include "algorithms/buildings/lod1_block.h"
 #include "algorithms/buildings/mirror_completion.h"
 #include "algorithms/core/progress.h"
 #include "algorithms/edges/edge_options.h"
@@ -125,6 +126,12 @@ struct RunRequest {
   // dropped (FlatPlanesBeyondEaves): the yard in the inner corner of an L.
   bool drop_eave_planes = true;
   EavePlaneOptions eave_planes;
+  // With footprints: a footprint that ends without an LoD2 building gets an
+  // LoD1 block (Lod1Block, Building::lod 1) at the height of the 3D lines
+  // over it (Lod1HeightFromLines), where they give one; its reason stays in
+  // `rejected`, marked "a flat block instead (LoD1)".
+  bool lod1_fallback = true;
+  Lod1Options lod1;
 };
 
 struct RunStage {
@@ -136,7 +143,8 @@ struct RunStage {
 struct RunSummary {
   std::vector<RunStage> stages;
   int lines = 0, sides = 0, accepted = 0, planes = 0, buildings = 0;
-  int solids = 0;  // buildings without parts and parts: what the hypotheses became
+  int solids = 0;          // buildings without parts and parts: what the hypotheses became
+  int lod1_buildings = 0;  // of `buildings`, LoD1 blocks (RunRequest::lod1_fallback)
   // Every plane or building hypothesis that did not become (part of) a
   // building, with the reason.
   std::vector<std::string> rejected;

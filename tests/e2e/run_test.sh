@@ -311,6 +311,44 @@ assert [x for x in rows if x[1] and "roof edges on image edges" in x[1]], rows
     || fail run_min_edge_support_drops "buildings kept or no reason"
 }
 
+# With footprints, a footprint whose roof is not reconstructed gets an LoD1
+# block at the height of the 3D lines over it: here every LoD2 building is
+# dropped (no roof outline lies wholly on image edges), so the footprints
+# that have lines over them come back as blocks, valid CityGML, marked in
+# the report and scored apart by eval.
+test_run_gives_footprints_without_a_roof_lod1_blocks() {
+  small_block || return
+  expect_ok run_lod1 run "$SIM" -footprints "$SIM/footprints.gpkg" -min_edge_support 1 \
+    -o "$WORK/lod1.gml" -report "$WORK/lod1.json" || return
+  grep -Eq "^LoD1 blocks +[1-9][0-9]* of [0-9]+ footprints without a roof" "$WORK/stdout.txt" \
+    && pass run_lod1_stage || fail run_lod1_stage "$(grep -i lod1 "$WORK/stdout.txt")"
+  grep -q "<bldg:lod1Solid>" "$WORK/lod1.gml" && ! grep -q "<bldg:lod2Solid>" "$WORK/lod1.gml" \
+    && pass run_lod1_solids || fail run_lod1_solids "no lod1Solid, or an lod2Solid left"
+  local xsd
+  if xsd=$(shared_or_skip "$XSD_REL"); then
+    xmllint --noout --nonet --schema "$xsd" "$WORK/lod1.gml" 2>"$WORK/xml.txt" \
+      && pass run_lod1_schema_valid || fail run_lod1_schema_valid "$(head -c 400 "$WORK/xml.txt")"
+  fi
+  expect_ok eval_lod1 eval "$WORK/lod1.gml" "$SIM" --json || return
+  python3 - "$WORK/stdout.txt" "$WORK/lod1.json" "$WORK/lod1.gml" <<'PY' 2>"$WORK/py.txt" \
+    && pass eval_lod1_apart || fail eval_lod1_apart "$(tail -1 "$WORK/py.txt")"
+import json, sys
+e = json.load(open(sys.argv[1]))
+rejected = json.load(open(sys.argv[2]))["rejected"]
+blocks = open(sys.argv[3]).read().count("<bldg:lod1Solid>")
+marked = [r for r in rejected if r.endswith("; a flat block instead (LoD1)")]
+assert len(marked) == blocks, (marked, blocks)
+assert e["lod1"]["blocks"] == blocks, e["lod1"]
+# Blocks are not LoD2: no roof plane and no LoD2 building to score.
+assert e["roof_planes"]["n_result"] == 0 and e["buildings"]["n_result"] == 0, e["buildings"]
+assert e["lod1"]["found_by_block_only"] == e["lod1"]["found"] > 0, e["lod1"]
+PY
+  expect_ok run_no_lod1 run "$SIM" -footprints "$SIM/footprints.gpkg" -min_edge_support 1 -no_lod1 \
+    -o "$WORK/nolod1.gml" -q
+  ! grep -q "<bldg:Building " "$WORK/nolod1.gml" && pass run_no_lod1_none \
+    || fail run_no_lod1_none "buildings written with -no_lod1"
+}
+
 # match -truth says how much roof edge a true pair could reach at all. One
 # strip: its edges along the flight line lie along every pair's epipolar
 # lines, so part of the roof edge is out of reach.

@@ -1,6 +1,7 @@
 """Reconstruct LoD2 buildings: roofsweep run (the whole pipeline)."""
 
-from qgis.core import (QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterDefinition,
+from qgis.core import (QgsProcessing, QgsProcessingOutputMultipleLayers, QgsProcessingParameterBoolean,
+                       QgsProcessingParameterDefinition,
                        QgsProcessingParameterFeatureSource, QgsProcessingParameterField,
                        QgsProcessingParameterFile, QgsProcessingParameterFileDestination,
                        QgsProcessingParameterExtent, QgsProcessingParameterNumber)
@@ -17,11 +18,13 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             "buildings. The output format follows the extension (GeoPackage, CityGML, CityJSON); GeoPackage "
             "layers are added to the project. Optional building footprints (any polygon layer) restrict "
             "the reconstruction: walls stand on the footprint where the roof planes cover it, and each "
-            "building carries its footprint's id. With a tile extent, only the images and image windows "
+            "building carries its footprint's id; a footprint whose roof was not reconstructed gets an LoD1 "
+            "block (field lod = 1, lod1_reason) at the height of the 3D lines over it, unless unticked. "
+            "With a tile extent, only the images and image windows "
             "that see it (and 30 m around it) are read, and only the buildings whose ground centre lies in "
             "it are written, ids prefixed with the tile's corner: the tiles of a grid hold every building once.")
     USES_OPTIONS = ("-o", "-overwrite", "-report", "-planes", "-min_height", "-footprints",
-                    "-footprints_layer", "-footprints_id", "-aoi")
+                    "-footprints_layer", "-footprints_id", "-no_lod1", "-aoi")
 
     BLOCK = "BLOCK"
     OUTPUT = "OUTPUT"
@@ -30,6 +33,7 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
     MIN_HEIGHT = "MIN_HEIGHT"
     FOOTPRINTS = "FOOTPRINTS"
     FOOTPRINT_ID = "FOOTPRINT_ID"
+    LOD1 = "LOD1"
     EXTENT = "EXTENT"
     LAYERS = "LAYERS"
 
@@ -49,6 +53,8 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
         self.addParameter(QgsProcessingParameterField(
             self.FOOTPRINT_ID, self.tr("Footprint id field (default: id, identificatie, gml_id or fid)"),
             parentLayerParameterName=self.FOOTPRINTS, optional=True))
+        self.addParameter(QgsProcessingParameterBoolean(
+            self.LOD1, self.tr("LoD1 blocks over footprints whose roof was not reconstructed"), True))
         self.addParameter(QgsProcessingParameterExtent(
             self.EXTENT, self.tr("Tile: only the buildings whose ground centre lies in this extent"), optional=True))
         min_height = QgsProcessingParameterNumber(self.MIN_HEIGHT, self.tr("Lowest roof above the ground (m)"),
@@ -81,6 +87,8 @@ class ReconstructAlgorithm(RoofsweepAlgorithm):
             fields = self.parameterAsFields(parameters, self.FOOTPRINT_ID, context)
             if fields:
                 args += ["-footprints_id", fields[0]]
+            if not self.parameterAsBool(parameters, self.LOD1, context):
+                args += ["-no_lod1"]
         args += self.aoi_arguments(parameters, self.EXTENT, block, context)
         self.run_program(args, feedback)
         layers = []
