@@ -1363,9 +1363,10 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   for (const std::string& id : order) {
     const auto [built, planes_over_it] = by_id[id];
     if (built > 0) continue;
-    res.rejected.push_back("footprint " + id +
-                           (planes_over_it > 0 ? ": its roof planes did not make a valid building"
-                                               : ": no roof plane found over it"));
+    const std::string why = planes_over_it > 0 ? "its roof planes did not make a valid building"
+                                               : "no roof plane found over it";
+    res.footprint_rejection[id] = {why, res.rejected.size()};
+    res.rejected.push_back("footprint " + id + ": " + why);
   }
   return res;
 }

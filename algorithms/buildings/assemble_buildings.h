@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -250,6 +251,15 @@ struct AssemblyResult {
   // when its building hypothesis failed as a whole, that reason (a plane
   // dropped on its own has its reason in `rejected`).
   std::vector<std::string> plane_building, plane_reason;
+  // Per footprint id left without a building: why, and the index of its
+  // line in `rejected` ("footprint ID: why", or "footprint ID (building B):
+  // why" for a building dropped after the assembly, which sets it too).
+  // Steps that act on such footprints (the LoD1 fallback) read it here.
+  struct FootprintRejection {
+    std::string why;
+    size_t line = 0;
+  };
+  std::map<std::string, FootprintRejection> footprint_rejection;
   int planes_in = 0, planes_used = 0, hypotheses = 0;
   int party_cuts = 0;  // hypotheses cut in two at a party line
 };

@@ -660,6 +660,12 @@ TEST(AssembleBuildingsFootprints, EveryPlaneAndFootprintEndsSomewhere) {
   EXPECT_EQ(r.model.buildings[0].string_attributes.at("footprint_id"), "house");
   EXPECT_TRUE(Mentions(r.rejected, "plane in the park", "over a footprint")) << r.rejected.size();
   EXPECT_TRUE(Mentions(r.rejected, "footprint shed", "no roof plane"));
+  // The footprint's reason is also kept by id, with its line.
+  ASSERT_EQ(r.footprint_rejection.size(), 1u);
+  const auto& shed = r.footprint_rejection.at("shed");
+  EXPECT_EQ(shed.why, "no roof plane found over it");
+  ASSERT_LT(shed.line, r.rejected.size());
+  EXPECT_EQ(r.rejected[shed.line], "footprint shed: " + shed.why);
   ExpectAllValid(r);
 }
 

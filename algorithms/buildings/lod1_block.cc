@@ -114,8 +114,8 @@ Building Lod1Block(const Ring2& outline, double ground_z, double roof_z) {
 
 Lod1Counts AddLod1Blocks(const std::vector<Footprint>& footprints, const GroundModel& ground,
                          double max_building_height_m, const std::vector<Segment3>& lines,
-                         const Lod1Options& o, CityModel* model,
-                         std::vector<std::string>* rejected) {
+                         const Lod1Options& o, AssemblyResult* assembled) {
+  CityModel* model = &assembled->model;
   Lod1Counts counts;
   std::set<std::string> built;
   for (const Building& b : model->buildings) {
@@ -133,14 +133,8 @@ Lod1Counts AddLod1Blocks(const std::vector<Footprint>& footprints, const GroundM
   }
   counts.footprints_without = static_cast<int>(order.size());
   for (const std::string& id : order) {
-    // "footprint ID: why", or "footprint ID (building B): why" for a
-    // building dropped after the assembly; the last one stands.
-    const std::string subject = "footprint " + id;
-    std::string* reason_line = nullptr;
-    for (std::string& r : *rejected)
-      if (r.compare(0, subject.size(), subject) == 0 &&
-          (r.compare(subject.size(), 2, ": ") == 0 || r.compare(subject.size(), 2, " (") == 0))
-        reason_line = &r;
+    const auto reason = assembled->footprint_rejection.find(id);
+    const bool has_reason = reason != assembled->footprint_rejection.end();
     Building whole;
     int n_lines = 0, courtyards = 0;
     double length = 0, area = 0;
@@ -173,9 +167,7 @@ Lod1Counts AddLod1Blocks(const std::vector<Footprint>& footprints, const GroundM
     }
     ++counts.blocks;
     b.id = StrFormat("rs_l%04d", counts.blocks);
-    const size_t colon = reason_line ? reason_line->find(": ") : std::string::npos;
-    const std::string why = colon != std::string::npos ? reason_line->substr(colon + 2)
-                                                       : std::string("no LoD2 building kept");
+    const std::string why = has_reason ? reason->second.why : std::string("no LoD2 building kept");
     b.string_attributes["footprint_id"] = id;
     b.string_attributes["outline"] =
         courtyards > 0 ? StrFormat("footprint (%d courtyards not modelled)", courtyards)
@@ -184,7 +176,8 @@ Lod1Counts AddLod1Blocks(const std::vector<Footprint>& footprints, const GroundM
     b.double_attributes["supporting_lines"] = n_lines;
     b.double_attributes["lod1_line_length_m"] = length;
     b.double_attributes["footprint_m2"] = area;
-    if (reason_line) *reason_line += "; a flat block instead (LoD1)";
+    if (has_reason && reason->second.line < assembled->rejected.size())
+      assembled->rejected[reason->second.line] += "; a flat block instead (LoD1)";
     model->buildings.push_back(std::move(b));
   }
   return counts;

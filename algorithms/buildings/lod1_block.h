@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/buildings/assemble_buildings.h"
 #include "algorithms/buildings/city_model.h"
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint.h"
@@ -74,18 +75,17 @@ struct Lod1Counts {
   int blocks = 0;              // of those, given an LoD1 building
 };
 
-// Gives every footprint id that no building of `model` carries
+// Gives every footprint id that no building of `assembled->model` carries
 // (footprint_id) an LoD1 building, where the 3D lines `lines` over it give
 // a height (Lod1HeightFromLines; ground from `ground`, the lowest under the
 // outline as for LoD2): one block per piece of a multipolygon footprint,
 // as parts of one building when there are several; a piece whose block
 // fails CheckBuildingSolid (a degenerate outline) is left out. The
 // building carries footprint_id, outline, supporting_lines,
-// lod1_line_length_m, footprint_m2 and lod1_reason: the reason the
-// footprint has in `rejected` ("footprint ID: why" or "footprint ID
-// (building B): why", for a building dropped after the assembly), which is
-// marked there "; a flat block instead (LoD1)". Ids rs_l0001, ... in
-// footprint order. Local frame. Deterministic.
+// lod1_line_length_m, footprint_m2 and lod1_reason: the footprint's reason
+// (AssemblyResult::footprint_rejection), whose line in `rejected` is marked
+// "; a flat block instead (LoD1)". Ids rs_l0001, ... in footprint order.
+// Local frame. Deterministic.
 //
 // Not the images' height where the lines give none: the flat roof's best
 // height over such a footprint (RoofsOverBareFootprints) was tried as a
@@ -95,7 +95,6 @@ struct Lod1Counts {
 // 1.50 m to 11.67 m. A footprint without lines keeps its reason only.
 Lod1Counts AddLod1Blocks(const std::vector<Footprint>& footprints, const GroundModel& ground,
                          double max_building_height_m, const std::vector<Segment3>& lines,
-                         const Lod1Options& options, CityModel* model,
-                         std::vector<std::string>* rejected);
+                         const Lod1Options& options, AssemblyResult* assembled);
 
 }  // namespace roofsweep

@@ -115,17 +115,25 @@ TEST(Lod1Block, FootprintsWithoutABuildingGetABlockWhereTheLinesAllow) {
   std::vector<Segment3> lines;
   for (double dx : {0.0, 20.0, 60.0, 80.0})
     for (const Segment3& l : lines_over(dx)) lines.push_back(l);
-  CityModel model;
+  AssemblyResult assembled;
+  CityModel& model = assembled.model;
   model.buildings.push_back(Lod1Block(kRect, 100, 108));
   model.buildings.back().lod = 2;
   model.buildings.back().string_attributes["footprint_id"] = "A";
-  std::vector<std::string> rejected = {
-      "footprint B: no roof plane found over it", "plane 3: too small",
-      "footprint C: no roof plane found over it", "footprint D (building rs_b0007): edges not seen",
-      "footprint DE: no roof plane found over it"};
+  // The reasons are the footprint_rejection entries, not the text: D's
+  // line names a building, and DE's subject starts with D's.
+  std::vector<std::string>& rejected = assembled.rejected;
+  rejected = {"footprint B: no roof plane found over it", "plane 3: too small",
+              "footprint C: no roof plane found over it",
+              "footprint D (building rs_b0007): edges not seen",
+              "footprint DE: no roof plane found over it"};
+  assembled.footprint_rejection = {{"B", {"no roof plane found over it", 0}},
+                                   {"C", {"no roof plane found over it", 2}},
+                                   {"D", {"edges not seen", 3}},
+                                   {"DE", {"no roof plane found over it", 4}}};
   GroundModel ground;
   ground.height = 100;
-  const Lod1Counts counts = AddLod1Blocks(footprints, ground, 60, lines, {}, &model, &rejected);
+  const Lod1Counts counts = AddLod1Blocks(footprints, ground, 60, lines, {}, &assembled);
   EXPECT_EQ(counts.footprints_without, 3);
   EXPECT_EQ(counts.blocks, 2);
   ASSERT_EQ(model.buildings.size(), 3u);

@@ -200,12 +200,11 @@ void WriteReport(const std::string& path, const RunSummary& s) {
 }
 
 // Sets each building's edge_support (BuildingEdgeSupport) and drops those
-// below r.min_edge_support, with the reason, also for their planes in
-// `assembled` (the -planes layer tells them as not built). Returns the
-// stage's result line.
+// below r.min_edge_support, with the reason in assembled->rejected, also
+// for their planes (the -planes layer tells them as not built) and their
+// footprint (footprint_rejection). Returns the stage's result line.
 std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& images,
-                             const RunRequest& r, AssemblyResult* assembled,
-                             std::vector<std::string>* rejected) {
+                             const RunRequest& r, AssemblyResult* assembled) {
   CityModel& model = assembled->model;
   const std::vector<EdgeSupport> support = BuildingEdgeSupport(model, block, images, r.image_edges);
   std::vector<Building> kept;
@@ -218,14 +217,17 @@ std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& ima
       b.double_attributes["edge_support"] = f;
       if (f < r.min_edge_support) {
         // With footprints every reason is the footprint's, as the
-        // assembly's are (and the LoD1 fallback finds it).
+        // assembly's are.
         const auto fp = b.string_attributes.find("footprint_id");
-        const std::string why =
-            (fp != b.string_attributes.end()
-                 ? "footprint " + fp->second + " (building " + b.id + ")"
-                 : "building " + b.id) +
-            ": " + StrFormat("roof edges on image edges %.2f < %.2f", f, r.min_edge_support);
-        rejected->push_back(why);
+        const std::string reason =
+            StrFormat("roof edges on image edges %.2f < %.2f", f, r.min_edge_support);
+        const std::string why = (fp != b.string_attributes.end()
+                                     ? "footprint " + fp->second + " (building " + b.id + ")"
+                                     : "building " + b.id) +
+                                ": " + reason;
+        if (fp != b.string_attributes.end())
+          assembled->footprint_rejection[fp->second] = {reason, assembled->rejected.size()};
+        assembled->rejected.push_back(why);
         dropped[b.id] = why;
         for (const Building* s : b.Solids()) dropped[s->id] = why;
         continue;
@@ -842,10 +844,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
 
   t0 = Clock::now();
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
-  out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   const double assembly_seconds = Since(t0);
   t0 = Clock::now();
-  const std::string support_result = ApplyEdgeSupport(block, images, r, &assembled, &out.rejected);
+  const std::string support_result = ApplyEdgeSupport(block, images, r, &assembled);
   const RunStage support_stage{"edge support", support_result, Since(t0)};
   std::optional<RunStage> lod1_stage;
   if (!footprints.empty() && r.lod1_fallback) {
@@ -853,11 +854,12 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<Segment3> segments;
     for (const Line3D& l : matched.lines) segments.push_back(l.segment);
     const Lod1Counts n = AddLod1Blocks(footprints, block.ground, block.max_building_height,
-                                       segments, r.lod1, &assembled.model, &out.rejected);
+                                       segments, r.lod1, &assembled);
     lod1_stage = RunStage{
         "LoD1 blocks",
         StrFormat("%d of %d footprints without a roof", n.blocks, n.footprints_without), Since(t0)};
   }
+  out.rejected.insert(out.rejected.end(), assembled.rejected.begin(), assembled.rejected.end());
   std::optional<RunStage> tile_stage;
   if (manifest.aoi) {
     const size_t before = assembled.model.buildings.size();
