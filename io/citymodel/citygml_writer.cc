@@ -155,47 +155,37 @@ void CityGmlWriter::WriteObject(const Building& b, const char* element,
     xmlTextWriterEndElement(writer_);
   }
 
-  // Ids are decided first because the solid references polygons that are
-  // written later, under boundedBy.
-  std::vector<std::string> surface_ids(b.surfaces.size());
-  std::vector<std::vector<std::string>> polygon_ids(b.surfaces.size());
+  size_t polygons = 0;
+  for (const Surface& s : b.surfaces) polygons += s.polygons.size();
   int poly_counter = 0;
-  for (size_t si = 0; si < b.surfaces.size(); ++si) {
-    surface_ids[si] = UniqueId(b.surfaces[si].id, bid + "_surf_" + std::to_string(si));
-    for (size_t pi = 0; pi < b.surfaces[si].polygons.size(); ++pi)
-      polygon_ids[si].push_back(bid + "_poly_" + std::to_string(poly_counter++));
-  }
-  if (poly_counter > 0 && b.lod == 1) {
+  if (polygons > 0 && b.lod == 1) {
     // LoD1 has no thematic surfaces in CityGML 2.0 (_BoundarySurface
     // carries lod2-4 geometry only): the block is one solid of its
-    // polygons, written inline.
-    xmlTextWriterStartElement(writer_, X("bldg:lod1Solid"));
-    xmlTextWriterStartElement(writer_, X("gml:Solid"));
-    xmlTextWriterStartElement(writer_, X("gml:exterior"));
-    xmlTextWriterStartElement(writer_, X("gml:CompositeSurface"));
+    // polygons, written inline, and its surfaces take no gml:id.
+    StartSolid("bldg:lod1Solid");
     for (size_t si = 0; si < b.surfaces.size(); ++si)
+      for (const Polygon3& p : b.surfaces[si].polygons)
+        WriteSurfaceMember(p, bid + "_poly_" + std::to_string(poly_counter++),
+                           "building " + bid + " surface " + std::to_string(si + 1));
+    EndSolid();
+  } else if (polygons > 0) {
+    // Ids are decided first because the solid references polygons that
+    // are written later, under boundedBy.
+    std::vector<std::string> surface_ids(b.surfaces.size());
+    std::vector<std::vector<std::string>> polygon_ids(b.surfaces.size());
+    for (size_t si = 0; si < b.surfaces.size(); ++si) {
+      surface_ids[si] = UniqueId(b.surfaces[si].id, bid + "_surf_" + std::to_string(si));
       for (size_t pi = 0; pi < b.surfaces[si].polygons.size(); ++pi)
-        WriteSurfaceMember(b.surfaces[si].polygons[pi], polygon_ids[si][pi],
-                           "building " + bid + " surface " + surface_ids[si]);
-    xmlTextWriterEndElement(writer_);
-    xmlTextWriterEndElement(writer_);
-    xmlTextWriterEndElement(writer_);
-    xmlTextWriterEndElement(writer_);
-  } else if (poly_counter > 0) {
-    xmlTextWriterStartElement(writer_, X("bldg:lod2Solid"));
-    xmlTextWriterStartElement(writer_, X("gml:Solid"));
-    xmlTextWriterStartElement(writer_, X("gml:exterior"));
-    xmlTextWriterStartElement(writer_, X("gml:CompositeSurface"));
+        polygon_ids[si].push_back(bid + "_poly_" + std::to_string(poly_counter++));
+    }
+    StartSolid("bldg:lod2Solid");
     for (const auto& ids : polygon_ids)
       for (const auto& pid : ids) {
         xmlTextWriterStartElement(writer_, X("gml:surfaceMember"));
         xmlTextWriterWriteAttribute(writer_, X("xlink:href"), X(("#" + pid).c_str()));
         xmlTextWriterEndElement(writer_);
       }
-    xmlTextWriterEndElement(writer_);
-    xmlTextWriterEndElement(writer_);
-    xmlTextWriterEndElement(writer_);
-    xmlTextWriterEndElement(writer_);
+    EndSolid();
 
     for (size_t si = 0; si < b.surfaces.size(); ++si) {
       const Surface& s = b.surfaces[si];
@@ -221,6 +211,17 @@ void CityGmlWriter::WriteObject(const Building& b, const char* element,
     xmlTextWriterEndElement(writer_);
   }
   xmlTextWriterEndElement(writer_);  // Building or BuildingPart
+}
+
+void CityGmlWriter::StartSolid(const char* property) {
+  xmlTextWriterStartElement(writer_, X(property));
+  xmlTextWriterStartElement(writer_, X("gml:Solid"));
+  xmlTextWriterStartElement(writer_, X("gml:exterior"));
+  xmlTextWriterStartElement(writer_, X("gml:CompositeSurface"));
+}
+
+void CityGmlWriter::EndSolid() {
+  for (int k = 0; k < 4; ++k) xmlTextWriterEndElement(writer_);
 }
 
 void CityGmlWriter::WriteSurfaceMember(const Polygon3& p, const std::string& id,

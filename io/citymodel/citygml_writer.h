@@ -36,6 +36,11 @@ class CityGmlWriter final : public CityModelStreamWriter {
   // One gml:surfaceMember holding the polygon (with its gml:id);
   // `context` names the building and surface in the error on an empty ring.
   void WriteSurfaceMember(const Polygon3& p, const std::string& id, const std::string& context);
+  // `property` (bldg:lod1Solid, bldg:lod2Solid) down to the
+  // gml:CompositeSurface whose members the caller writes; EndSolid closes
+  // the four.
+  void StartSolid(const char* property);
+  void EndSolid();
   std::string UniqueId(const std::string& wanted, const std::string& fallback);
   bool Taken(const std::string& id) const;
   void Check(int rc, const char* what);
