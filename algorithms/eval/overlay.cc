@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "algorithms/core/error.h"
 #include "algorithms/eval/plan_view.h"
@@ -17,6 +18,7 @@ const cv::Scalar kRefMissedFill(190, 190, 255);
 const cv::Scalar kRefOutline(200, 110, 0);
 const cv::Scalar kResCorrect(0, 120, 0);
 const cv::Scalar kResFalse(200, 0, 200);
+const cv::Scalar kLod1Block(0, 140, 255);
 constexpr int kShift = 4;  // sub-pixel bits for OpenCV drawing
 
 struct Frame {
@@ -54,13 +56,13 @@ std::string Percent(const std::optional<double>& v) {
 }
 
 constexpr int kLegendLine = 18;
-constexpr int kLegendHeight = 8 * kLegendLine + 16;
 constexpr int kLegendWidth = 300;
+int LegendHeight(bool blocks) { return (blocks ? 9 : 8) * kLegendLine + 16; }
 
 // Drawn in a band below the map, so it never hides a roof.
-void Legend(cv::Mat& img, int top, const EvalResult& e, const Frame& f) {
+void Legend(cv::Mat& img, int top, const EvalResult& e, const Frame& f, int blocks) {
   const int line = kLegendLine;
-  cv::Rect box(8, top + 8, kLegendWidth, kLegendHeight);
+  cv::Rect box(8, top + 8, kLegendWidth, LegendHeight(blocks > 0));
   cv::rectangle(img, box, kBlack, 1);
   int y = box.y + line;
   const int x = box.x + 8;
@@ -80,6 +82,10 @@ void Legend(cv::Mat& img, int top, const EvalResult& e, const Frame& f) {
   swatch_line(kRefOutline, 1, "reference outline");
   swatch_line(kResCorrect, 2, "result plane, correct");
   swatch_line(kResFalse, 2, "result plane, false");
+  if (blocks > 0)
+    swatch_line(kLod1Block, 2,
+                "LoD1 block" + std::string(blocks > 1 ? "s" : "") + " (" + std::to_string(blocks) +
+                    ", scored apart)");
   const auto& p = e.roof_planes;
   Text(img, "planes: compl " + Percent(p.completeness) + "  corr " + Percent(p.correctness),
        {x, y});
@@ -108,7 +114,7 @@ void Legend(cv::Mat& img, int top, const EvalResult& e, const Frame& f) {
 }  // namespace
 
 cv::Mat RenderOverlay(const CityModel& result, const CityModel& truth, const EvalResult& eval,
-                      const OverlayOptions& options) {
+                      const OverlayOptions& options, const CityModel* blocks) {
   if (!(options.metres_per_pixel > 0) || options.max_side_px < 64)
     throw Error("overlay: metres_per_pixel must be positive and max_side_px at least 64");
   const auto res = eval::ExtractRoofPlanes(result, eval.options.planes);
@@ -117,9 +123,15 @@ cv::Mat RenderOverlay(const CityModel& result, const CityModel& truth, const Eva
       ref.planes.size() != eval.reference_planes.size())
     throw Error("overlay: the evaluation does not belong to these two models");
 
+  const int n_blocks = blocks ? static_cast<int>(blocks->buildings.size()) : 0;
   const auto a = result.Bounds(), b = truth.Bounds();
   double x0 = std::min(a(0), b(0)), y0 = std::min(a(1), b(1));
   double x1 = std::max(a(3), b(3)), y1 = std::max(a(4), b(4));
+  if (n_blocks > 0) {
+    const auto c = blocks->Bounds();
+    x0 = std::min(x0, c(0)), y0 = std::min(y0, c(1));
+    x1 = std::max(x1, c(3)), y1 = std::max(y1, c(4));
+  }
   if (!std::isfinite(x0) || !std::isfinite(x1)) x0 = y0 = 0, x1 = y1 = 1;
   x0 -= options.margin_m, y0 -= options.margin_m, x1 += options.margin_m, y1 += options.margin_m;
   double mpp = options.metres_per_pixel;
@@ -127,7 +139,7 @@ cv::Mat RenderOverlay(const CityModel& result, const CityModel& truth, const Eva
   const int cols = std::max(kLegendWidth + 16, static_cast<int>(std::ceil((x1 - x0) / mpp)));
   const int map_rows = static_cast<int>(std::ceil((y1 - y0) / mpp));
   const Frame f{x0, y0 + map_rows * mpp, mpp};
-  cv::Mat img(map_rows + kLegendHeight + 16, cols, CV_8UC3, kWhite);
+  cv::Mat img(map_rows + LegendHeight(n_blocks > 0) + 16, cols, CV_8UC3, kWhite);
 
   for (size_t i = 0; i < ref.planes.size(); ++i) {
     const auto rings = Rings(ref.planes[i].outline, f);
@@ -141,8 +153,11 @@ cv::Mat RenderOverlay(const CityModel& result, const CityModel& truth, const Eva
     cv::polylines(img, Rings(res.planes[i].outline, f), true,
                   eval.result_planes[i].true_positive ? kResCorrect : kResFalse, 2, cv::LINE_AA,
                   kShift);
+  for (int i = 0; i < n_blocks; ++i)
+    cv::polylines(img, Rings(eval::BuildingFootprint(blocks->buildings[i], eval.options.planes), f),
+                  true, kLod1Block, 2, cv::LINE_AA, kShift);
   cv::line(img, {0, map_rows}, {cols - 1, map_rows}, cv::Scalar(160, 160, 160), 1);
-  Legend(img, map_rows, eval, f);
+  Legend(img, map_rows, eval, f, n_blocks);
   return img;
 }
 

@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "algorithms/buildings/lod1_block.h"
 #include "algorithms/core/error.h"
 #include "algorithms/eval/test_models.h"
 #include "tests/support/shared_data.h"
@@ -56,6 +57,33 @@ TEST(Overlay, FalseResultPlanesAreOutlinedInMagenta) {
   const std::string dir = testing::TempDir("overlay_shifted");
   ASSERT_TRUE(cv::imwrite(dir + "/overlay.png", img));
   std::cout << "overlay written to " << dir << "/overlay.png\n";
+}
+
+int CountColour(const cv::Mat& img, const cv::Scalar& bgr) {
+  cv::Mat mask;
+  cv::inRange(img, bgr, bgr, mask);
+  return cv::countNonZero(mask);
+}
+
+TEST(Overlay, Lod1BlocksAreOutlinedInOrange) {
+  const CityModel truth = eval_test::ThreeHouses();
+  CityModel result = truth;
+  result.buildings.pop_back();  // the hip house, 14 x 10 m, has a block instead
+  CityModel blocks;
+  blocks.buildings.push_back(Lod1Block({{80, 0}, {94, 0}, {94, 10}, {80, 10}}, 30, 36));
+  const EvalResult e = Evaluate(result, truth, {});
+  const cv::Mat without = RenderOverlay(result, truth, e);
+  const cv::Mat with = RenderOverlay(result, truth, e, {}, &blocks);
+  const cv::Scalar orange(0, 140, 255);
+  EXPECT_EQ(CountColour(without, orange), 0);
+  // A 48 m outline at 0.1 m, 2 px wide, anti-aliased at the corners, and
+  // the legend's swatch.
+  EXPECT_GT(CountColour(with, orange), 700);
+  EXPECT_EQ(with.cols, without.cols);
+  EXPECT_EQ(with.rows, without.rows + 18);  // one more legend line
+  const double x0 = -5, y_top = 15;
+  EXPECT_EQ(PixelAt(with, 87, 0, x0, y_top, 0.1), cv::Vec3b(0, 140, 255));  // the south wall
+  EXPECT_EQ(PixelAt(with, 87, 5, x0, y_top, 0.1), PixelAt(without, 87, 5, x0, y_top, 0.1));
 }
 
 TEST(Overlay, RefusesAnEvaluationOfOtherModels) {

@@ -104,7 +104,6 @@ double MaxPatchShift(const cv::Mat& a, const cv::Mat& b, const cv::Mat& valid, i
       if (sd[0] < 0.02 * mean[0]) continue;  // featureless
       const cv::Point2d t = AlignTranslation(a, b, r);
       const double s = std::hypot(t.x, t.y);
-      if (getenv("RS_SIM_DEBUG")) std::printf("patch %d %d: %.3f %.3f\n", x, y, t.x, t.y);
       worst = std::max(worst, s);
       all.push_back(s);
       ++*patches;

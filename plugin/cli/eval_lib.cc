@@ -196,7 +196,7 @@ EvalReport RunEval(const EvalRequest& r) {
     WriteFeatureLayer(r.vertices, "vertices", LayerGeometry::kPointZ, features, vertex_layer);
   }
   if (!r.png.empty()) {
-    cv::Mat bgr = RenderOverlay(result, truth, report.result), rgb;
+    cv::Mat bgr = RenderOverlay(result, truth, report.result, {}, &blocks), rgb;
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
     WriteImage(r.png, rgb);
   }
