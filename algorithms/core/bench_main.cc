@@ -6,6 +6,7 @@
 #include "algorithms/core/heap_policy.h"
 
 int main(int argc, char** argv) {
+  roofsweep::ReexecWithHugePageHeap(argv);
   roofsweep::KeepLargeAllocationsOnHeap();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

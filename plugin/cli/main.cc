@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "algorithms/core/error.h"
@@ -52,12 +53,14 @@ void PrintMainUsage(std::FILE* to) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  roofsweep::ReexecWithHugePageHeap(argv);
   roofsweep::KeepLargeAllocationsOnHeap();
   GDALAllRegister();
   // Handles --version, --formats, --config, --debug, --optfile, --help-general
   // and removes them from argv, exactly as in the GDAL utilities.
   argc = GDALGeneralCmdLineProcessor(argc, &argv, 0);
   if (argc < 1) return -argc;
+  if (const char* t = std::getenv("GLIBC_TUNABLES")) CPLDebug("roofsweep", "GLIBC_TUNABLES=%s", t);
 
   std::vector<std::string> args(argv + 1, argv + argc);
   CSLDestroy(argv);

@@ -158,4 +158,26 @@ test_wrong_usage() {
   [[ ! -s "$WORK/exists.gpkg" && ! -s "$WORK/exists.json" ]] && pass usage_exists_untouched || fail usage_exists_untouched "an existing output was changed"
 }
 
+# The program runs itself again with malloc advising transparent huge pages
+# where the kernel gives them only on advice (heap_policy.h); a user's
+# glibc.malloc.hugetlb=0 keeps it from doing so.
+test_huge_page_heap() {
+  local mode glibc
+  mode=$(cat /sys/kernel/mm/transparent_hugepage/enabled 2>/dev/null)
+  glibc=$(getconf GNU_LIBC_VERSION 2>/dev/null | awk '{split($2, v, "."); print v[1] * 1000 + v[2]}')
+  if [[ "$mode" != *"[madvise]"* || -z "$glibc" || "$glibc" -lt 2035 ]]; then
+    echo "SKIP: huge_page_heap: transparent huge pages are '$mode', glibc ${glibc:-unknown}: nothing to advise"
+    return
+  fi
+  env -u GLIBC_TUNABLES "$RS" --debug on help >"$WORK/hp.txt" 2>&1
+  grep -q 'roofsweep: GLIBC_TUNABLES=glibc.malloc.hugetlb=1$' "$WORK/hp.txt" \
+    && pass huge_page_heap || fail huge_page_heap "$(grep -i tunables "$WORK/hp.txt")"
+  GLIBC_TUNABLES=glibc.malloc.check=0 "$RS" --debug on help >"$WORK/hp.txt" 2>&1
+  grep -q 'GLIBC_TUNABLES=glibc.malloc.check=0:glibc.malloc.hugetlb=1$' "$WORK/hp.txt" \
+    && pass huge_page_heap_keeps_other_tunables || fail huge_page_heap_keeps_other_tunables "$(grep -i tunables "$WORK/hp.txt")"
+  GLIBC_TUNABLES=glibc.malloc.hugetlb=0 "$RS" --debug on help >"$WORK/hp.txt" 2>&1
+  grep -q 'GLIBC_TUNABLES=glibc.malloc.hugetlb=0$' "$WORK/hp.txt" \
+    && pass huge_page_heap_opt_out || fail huge_page_heap_opt_out "$(grep -i tunables "$WORK/hp.txt")"
+}
+
 run_tests
