@@ -251,10 +251,12 @@ struct AssemblyResult {
   // when its building hypothesis failed as a whole, that reason (a plane
   // dropped on its own has its reason in `rejected`).
   std::vector<std::string> plane_building, plane_reason;
-  // Per footprint id left without a building: why, and the index of its
+  // Per footprint id without an LoD2 building: why, and the index of its
   // line in `rejected` ("footprint ID: why", or "footprint ID (building B):
   // why" for a building dropped after the assembly, which sets it too).
-  // Steps that act on such footprints (the LoD1 fallback) read it here.
+  // Steps that act on such footprints (the LoD1 fallback, which may give
+  // one a flat block after all) read it here. The indices hold only while
+  // `rejected` is appended to, never reordered or erased from.
   struct FootprintRejection {
     std::string why;
     size_t line = 0;

@@ -1,14 +1,14 @@
 #include "algorithms/core/heap_policy.h"
 
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <string>
-
 #if defined(__GLIBC__)
 #include <gnu/libc-version.h>
 #include <malloc.h>
 #include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 #endif
 
 namespace roofsweep {

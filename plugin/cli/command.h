@@ -21,6 +21,10 @@ struct Command {
   std::string name;
   std::string purpose;  // one line, for `roofsweep --help`
   std::function<int(const std::vector<std::string>& args, Context& ctx)> run;
+  // Reads or renders images, hundreds of MB of them: worth restarting the
+  // process with a huge-page heap (ReexecWithHugePageHeap) for, where the
+  // restart's 0.1 s would be most of a small command's time.
+  bool works_on_images = false;
 };
 
 // Commands register themselves from their <name>_cmd.cc with a static

@@ -67,7 +67,8 @@ int Lines(const std::vector<std::string>& args, Context& ctx) {
 }
 
 const CommandRegistration kRegistration{
-    {"lines", "extract straight colour edge segments of every image, one layer per image", Lines}};
+    {"lines", "extract straight colour edge segments of every image, one layer per image", Lines,
+     true}};
 
 }  // namespace
 }  // namespace roofsweep::cli

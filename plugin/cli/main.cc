@@ -53,14 +53,15 @@ void PrintMainUsage(std::FILE* to) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  roofsweep::ReexecWithHugePageHeap(argv);
+  // The exec below needs the arguments as they came; the GDAL processor
+  // leaves this array alone and hands back a new one.
+  char** const given_argv = argv;
   roofsweep::KeepLargeAllocationsOnHeap();
   GDALAllRegister();
   // Handles --version, --formats, --config, --debug, --optfile, --help-general
   // and removes them from argv, exactly as in the GDAL utilities.
   argc = GDALGeneralCmdLineProcessor(argc, &argv, 0);
   if (argc < 1) return -argc;
-  if (const char* t = std::getenv("GLIBC_TUNABLES")) CPLDebug("roofsweep", "GLIBC_TUNABLES=%s", t);
 
   std::vector<std::string> args(argv + 1, argv + argc);
   CSLDestroy(argv);
@@ -79,6 +80,9 @@ int main(int argc, char** argv) {
     PrintMainUsage(stderr);
     return 1;
   }
+  // No thread has started yet (GDAL starts its pools on first use).
+  if (it->works_on_images) roofsweep::ReexecWithHugePageHeap(given_argv);
+  if (const char* t = std::getenv("GLIBC_TUNABLES")) CPLDebug("roofsweep", "GLIBC_TUNABLES=%s", t);
 
   roofsweep::cli::Context ctx;
   roofsweep::cli::GdalTermProgress term;

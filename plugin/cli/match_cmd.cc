@@ -63,7 +63,7 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
 }
 
 const CommandRegistration kRegistration{
-    {"match", "match edge segments across views and write 3D lines", Match}};
+    {"match", "match edge segments across views and write 3D lines", Match, true}};
 
 }  // namespace
 }  // namespace roofsweep::cli

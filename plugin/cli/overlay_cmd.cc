@@ -46,7 +46,7 @@ int Overlay(const std::vector<std::string>& args, Context& ctx) {
 
 const CommandRegistration kRegistration{
     {"overlay", "draw a LoD2 model over the block's images and measure its edges' image support",
-     Overlay}};
+     Overlay, true}};
 
 }  // namespace
 }  // namespace roofsweep::cli

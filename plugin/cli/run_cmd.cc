@@ -192,9 +192,9 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
 }
 
 const CommandRegistration kRun{
-    {"run", "reconstruct LoD2 buildings from an oriented block (the whole pipeline)", Run}};
+    {"run", "reconstruct LoD2 buildings from an oriented block (the whole pipeline)", Run, true}};
 const CommandRegistration kSweep{
-    {"sweep", "sweep half-planes about the 3D lines and write them for inspection", Sweep}};
+    {"sweep", "sweep half-planes about the 3D lines and write them for inspection", Sweep, true}};
 
 }  // namespace
 }  // namespace roofsweep::cli

@@ -84,7 +84,8 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
 }
 
 const CommandRegistration kRegistration{
-    {"simulate", "render an oriented aerial block of LoD2 buildings with ground truth", Simulate}};
+    {"simulate", "render an oriented aerial block of LoD2 buildings with ground truth", Simulate,
+     true}};
 
 }  // namespace
 }  // namespace roofsweep::cli

@@ -169,15 +169,19 @@ test_huge_page_heap() {
     echo "SKIP: huge_page_heap: transparent huge pages are '$mode', glibc ${glibc:-unknown}: nothing to advise"
     return
   fi
-  env -u GLIBC_TUNABLES "$RS" --debug on help >"$WORK/hp.txt" 2>&1
+  env -u GLIBC_TUNABLES "$RS" --debug on run --help >"$WORK/hp.txt" 2>&1
   grep -q 'roofsweep: GLIBC_TUNABLES=glibc.malloc.hugetlb=1$' "$WORK/hp.txt" \
     && pass huge_page_heap || fail huge_page_heap "$(grep -i tunables "$WORK/hp.txt")"
-  GLIBC_TUNABLES=glibc.malloc.check=0 "$RS" --debug on help >"$WORK/hp.txt" 2>&1
+  GLIBC_TUNABLES=glibc.malloc.check=0 "$RS" --debug on run --help >"$WORK/hp.txt" 2>&1
   grep -q 'GLIBC_TUNABLES=glibc.malloc.check=0:glibc.malloc.hugetlb=1$' "$WORK/hp.txt" \
     && pass huge_page_heap_keeps_other_tunables || fail huge_page_heap_keeps_other_tunables "$(grep -i tunables "$WORK/hp.txt")"
-  GLIBC_TUNABLES=glibc.malloc.hugetlb=0 "$RS" --debug on help >"$WORK/hp.txt" 2>&1
+  GLIBC_TUNABLES=glibc.malloc.hugetlb=0 "$RS" --debug on run --help >"$WORK/hp.txt" 2>&1
   grep -q 'GLIBC_TUNABLES=glibc.malloc.hugetlb=0$' "$WORK/hp.txt" \
     && pass huge_page_heap_opt_out || fail huge_page_heap_opt_out "$(grep -i tunables "$WORK/hp.txt")"
+  # A command that reads no images is not worth the second start.
+  env -u GLIBC_TUNABLES "$RS" --debug on info --help >"$WORK/hp.txt" 2>&1
+  ! grep -q 'GLIBC_TUNABLES' "$WORK/hp.txt" \
+    && pass huge_page_heap_not_for_info || fail huge_page_heap_not_for_info "$(grep -i tunables "$WORK/hp.txt")"
 }
 
 run_tests
