@@ -13,6 +13,7 @@
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
+#include "algorithms/buildings/right_corners.h"
 #include "algorithms/buildings/solid_check.h"
 #include "algorithms/core/format.h"
 
@@ -260,26 +261,8 @@ bool GableFaces(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
 // Two supporting lines that form a right-angled corner in plan (see
 // AssemblyOptions::keep_right_corners).
 bool HasRightCorner(const RoofPlaneHypothesis& p, const AssemblyOptions& o) {
-  const double max_cos = std::sin(o.corner_max_angle_deg * kDeg);
-  const auto& l = p.lines_xy;
-  for (size_t i = 0; i < l.size(); ++i) {
-    const Eigen::Vector2d di = l[i][1] - l[i][0];
-    if (di.norm() < o.corner_min_arm_m) continue;
-    for (size_t j = i + 1; j < l.size(); ++j) {
-      const Eigen::Vector2d dj = l[j][1] - l[j][0];
-      if (dj.norm() < o.corner_min_arm_m) continue;
-      if (std::abs(di.normalized().dot(dj.normalized())) > max_cos) continue;
-      // Crossing of the two infinite lines; the angle test keeps it finite.
-      const double den = di.x() * dj.y() - di.y() * dj.x();
-      const Eigen::Vector2d w = l[j][0] - l[i][0];
-      const double t = (w.x() * dj.y() - w.y() * dj.x()) / den;
-      const Eigen::Vector2d x = l[i][0] + t * di;
-      if (PointSegmentDistance(x, l[i][0], l[i][1]) <= o.adjacency_gap_m &&
-          PointSegmentDistance(x, l[j][0], l[j][1]) <= o.adjacency_gap_m)
-        return true;
-    }
-  }
-  return false;
+  return CountRightCorners(p.lines_xy,
+                           {o.corner_min_arm_m, o.corner_max_angle_deg, o.adjacency_gap_m}) > 0;
 }
 
 // Plausible roof planes of the input, with the reasons for the others.

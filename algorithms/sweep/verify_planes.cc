@@ -513,6 +513,20 @@ std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> HingeOf(
   return std::make_pair(q0, m);
 }
 
+// See VerifyOptions::height_from_outline.
+bool DrawnByItsLines(const RoofPlaneHypothesis& p, const VerifyOptions& o) {
+  if (CountRightCorners(p.lines_xy, o.outline_corners) < o.outline_min_corners) return false;
+  double drawn = 0, perimeter = 0;
+  for (const auto& l : p.lines_xy) {
+    const double length = (l[1] - l[0]).norm();
+    if (length > o.outline_max_line_m) return false;
+    drawn += length;
+  }
+  for (size_t k = 0; k < p.patch.size(); ++k)
+    perimeter += (p.patch[(k + 1) % p.patch.size()] - p.patch[k]).norm();
+  return drawn >= o.outline_min_fraction * perimeter;
+}
+
 }  // namespace
 
 std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<cv::Mat>& images,
@@ -671,10 +685,14 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // whatever its height: its lines decide, if one of them crosses the
     // baselines (see VerifyOptions::height_from_crossing_lines).
     const bool height_fails = v.score < std::max(v.score_below, v.score_above) + o.min_margin;
-    const bool on_lines = height_fails && o.height_from_crossing_lines &&
-                          v.offset_m * ParallaxAcrossTexture(parallax, at.texture) < o.ncc_radius &&
-                          LineCrossesBaseline(parallax, p.lines_xy, o.crossing_line_min_length_m,
+    const bool crossing = LineCrossesBaseline(parallax, p.lines_xy, o.crossing_line_min_length_m,
                                               o.crossing_line_min_angle_deg);
+    const bool on_lines =
+        height_fails && crossing &&
+        ((o.height_from_crossing_lines &&
+          v.offset_m * ParallaxAcrossTexture(parallax, at.texture) < o.ncc_radius) ||
+         (o.height_from_outline && v.below_difference > 0 && v.above_difference > 0 &&
+          DrawnByItsLines(p, o)));
     char buf[200];
     if (v.score < o.min_score) {
       std::snprintf(buf, sizeof buf, "photometric score %.2f < %.2f over %d samples", v.score,

@@ -283,6 +283,58 @@ TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
   EXPECT_FALSE(w[1].accepted) << w[1].score;
 }
 
+// A shed's flat roof whose height the images do not tell (here: a margin
+// no plane can reach) is accepted on its lines when three of its sides are
+// drawn, and not on one side, nor at a height the images like less.
+TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
+  Quad roof;
+  roof.origin = {-3, 0, 4.3};
+  roof.u = {6, 0, 0};
+  roof.v = {0, 5, 0};
+  roof.seed = 7;
+  TestScene scene;
+  scene.quads = {roof};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  auto flat = [](double z) {
+    RoofPlaneHypothesis h;
+    h.plane = Eigen::Vector4d(0, 0, 1, -z);
+    h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
+    return h;
+  };
+  const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
+                                       west = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
+                                       east = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
+  RoofPlaneHypothesis drawn = flat(4.3), one_side = flat(4.3), high = flat(5.8);
+  drawn.lines_xy = high.lines_xy = {eave, west, east};
+  one_side.lines_xy = {west};
+  VerifyOptions o;
+  o.min_margin = 1.0;  // no plane confirms its height
+  NullProgress progress;
+  const auto v = VerifyPlanes(block, images, {drawn, one_side, high}, o, progress);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_TRUE(v[0].accepted) << v[0].reason;
+  EXPECT_FALSE(v[0].height_confirmed);
+  EXPECT_FALSE(v[1].accepted);
+  EXPECT_EQ(v[1].reason.rfind("height not confirmed", 0), 0u) << v[1].reason;
+  EXPECT_FALSE(v[2].accepted) << "below " << v[2].below_difference;
+  // Nor when a line is longer than a shed's (the 6 m eave), nor when the
+  // lines (16 m) draw less of the patch's perimeter (20.4 m) than asked.
+  VerifyOptions short_lines = o, most_of_it = o;
+  short_lines.outline_max_line_m = 5.5;
+  most_of_it.outline_min_fraction = 0.9;
+  for (const VerifyOptions& stricter : {short_lines, most_of_it}) {
+    const auto s = VerifyPlanes(block, images, {drawn}, stricter, progress);
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_FALSE(s[0].accepted);
+  }
+  // Without the option the drawn outline does not help.
+  o.height_from_outline = false;
+  const auto w = VerifyPlanes(block, images, {drawn}, o, progress);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_FALSE(w[0].accepted);
+}
+
 TEST(BestModelHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
   // A flat textured roof, 8 x 6 m, at z = 4.3 over the textured ground.
   TestScene scene;
