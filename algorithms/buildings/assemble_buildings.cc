@@ -268,7 +268,9 @@ bool HasRightCorner(const RoofPlaneHypothesis& p, const AssemblyOptions& o) {
 // Plausible roof planes of the input, with the reasons for the others.
 std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& o,
-                                 std::vector<std::string>* rejected) {
+                                 std::vector<std::string>* rejected,
+                                 std::vector<std::vector<int>>* kept_for) {
+  kept_for->assign(planes.size(), {});
   std::vector<int> keep, attached;
   for (int i = 0; i < static_cast<int>(planes.size()); ++i) {
     const RoofPlaneHypothesis& p = planes[i];
@@ -324,19 +326,22 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
     const int i = attached[a];
     const RoofPlaneHypothesis& p = planes[i];
     const Ring2 grown = GrowConvex(p.patch, o.adjacency_gap_m);
-    bool joins = false;
-    for (size_t k = 0; k < n_keep && !joins; ++k) {
+    std::vector<int> meets;
+    for (size_t k = 0; k < n_keep; ++k) {
       const RoofPlaneHypothesis& q = planes[keep[k]];
-      joins = PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o);
+      if (PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o))
+        meets.push_back(keep[k]);
     }
-    for (size_t b = 0; b < attached.size() && !joins && !cornered[a] && o.join_gable_to_corners;
-         ++b) {
+    for (size_t b = 0;
+         b < attached.size() && meets.empty() && !cornered[a] && o.join_gable_to_corners; ++b) {
       const RoofPlaneHypothesis& q = planes[attached[b]];
-      joins = cornered[b] && GableFaces(p, q, o) &&
-              PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o);
+      if (cornered[b] && GableFaces(p, q, o) &&
+          PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o))
+        meets.push_back(attached[b]);
     }
-    if (joins || cornered[a]) {
+    if (!meets.empty() || cornered[a]) {
       keep.push_back(i);
+      if (!cornered[a]) (*kept_for)[i] = std::move(meets);
     } else {
       rejected->push_back((p.id.empty() ? StrFormat("plane %d", i) : p.id) +
                           StrFormat(": longest supporting line %.2f m < %.2f m, it joins no "
@@ -1034,7 +1039,9 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   res.plane_reason.assign(input.size(), "");
 
   // 1. Plausible roof planes, cut at the footprints when there are any.
-  const std::vector<int> plausible = PlausiblePlanes(input, ground, o, &res.rejected);
+  std::vector<std::vector<int>> kept_for;  // per input plane: the planes it was kept for meeting
+  const std::vector<int> plausible = PlausiblePlanes(input, ground, o, &res.rejected, &kept_for);
+  std::vector<char> dropped(input.size(), 0);  // per input plane, once the assembly dropped it
   std::vector<RoofPlaneHypothesis> planes;
   std::vector<int> footprint_of, origin;  // per plane: footprint index or -1, input index
   if (footprints.empty()) {
@@ -1270,6 +1277,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         }
       } else {
         res.rejected.push_back(name(active[e.worst]) + e.worst_reason);
+        dropped[origin[active[e.worst]]] = 1;
         active.erase(active.begin() + e.worst);
       }
       if (active.empty()) break;
@@ -1283,14 +1291,26 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       active = std::move(pieces[0]);
     }
     if (!env) {
+      for (int i : active) dropped[origin[i]] = 1;
       res.rejected.push_back(bname + ": no roof plane left");
       continue;
     }
     // The planes of a hypothesis that fails as a whole share its reason.
     auto reject = [&](const std::string& why) {
       res.rejected.push_back(bname + ": " + why);
-      for (int i : active) res.plane_reason[origin[i]] = bname + ": " + why;
+      for (int i : active) {
+        res.plane_reason[origin[i]] = bname + ": " + why;
+        dropped[origin[i]] = 1;
+      }
     };
+    if (o.drop_lone_companions && footprints.empty() && active.size() == 1) {
+      const std::vector<int>& anchors = kept_for[origin[active[0]]];
+      if (!anchors.empty() &&
+          std::all_of(anchors.begin(), anchors.end(), [&](int a) { return dropped[a] != 0; })) {
+        reject("its only plane was kept for meeting roof planes that were dropped");
+        continue;
+      }
+    }
     const double area = SignedArea(env->outline);
     if (area < o.min_footprint_m2) {
       reject(StrFormat("footprint %.1f m2 < %.1f m2", area, o.min_footprint_m2));

@@ -89,6 +89,16 @@ struct AssemblyOptions {
   double gable_min_slope_deg = 10.0;
   double gable_max_slope_difference_deg = 5.0;
   double gable_max_azimuth_deg = 10.0;
+  // Without footprints, a building hypothesis left with one short-lined
+  // plane that was kept only for meeting others (the two rules above), all
+  // of which the assembly dropped on the way, is dropped too: it no longer
+  // joins a roof (a tree crown's facet beside a false face the envelope
+  // rejected). A porch split off its house as a convex part of its own
+  // stays, its house being kept. On 30 paired runs from matched lines
+  // (session 57) plane quality +0.13 +- 0.06 (5 up, none down),
+  // completeness unchanged, building quality +0.28 +- 0.12; every plane
+  // it dropped was false.
+  bool drop_lone_companions = true;
   // Two patches belong to one building when they come within adjacency_gap_m
   // of each other in plan view and their planes meet there (height
   // difference below max_step_m): a lower neighbour across a party wall is a

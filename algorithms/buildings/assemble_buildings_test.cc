@@ -208,6 +208,37 @@ TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
   EXPECT_EQ(Solids(r)[0].roof_type, roof_type::kGabled);
 }
 
+TEST(AssembleBuildings, AShortLinedPlaneGoesWithThePlaneItWasKeptFor) {
+  // A short-lined facet at 3 m (a tree crown's) kept for meeting a plane
+  // at 3.5 m over most of it, which lies above it everywhere in their
+  // envelope and is dropped there (a second fit where the facet was seen,
+  // not a roof of its own): the facet no longer joins any roof.
+  RoofPlaneHypothesis facet = Hyp(Eigen::Vector4d(0, 0, 1, -3), {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  facet.longest_line_m = 2.5;
+  const RoofPlaneHypothesis above =
+      Hyp(Eigen::Vector4d(0, 0, 1, -3.5), {{1, 0}, {5, 0}, {5, 4}, {1, 4}});
+  AssemblyResult r = AssembleBuildings({facet, above}, Flat(0));
+  EXPECT_TRUE(r.model.buildings.empty());
+  ASSERT_EQ(r.rejected.size(), 2u);
+  EXPECT_TRUE(Mentions(r.rejected, "plane 1", "above the roof everywhere"));
+  EXPECT_NE(r.plane_reason[0].find("kept for meeting roof planes that were dropped"),
+            std::string::npos)
+      << r.plane_reason[0];
+  AssemblyOptions off;
+  off.drop_lone_companions = false;
+  r = AssembleBuildings({facet, above}, Flat(0), off);
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.plane_building[0], r.model.buildings[0].id);
+  // A plane that stands on its own is not dropped with the plane beside it.
+  RoofPlaneHypothesis roof = facet;
+  roof.longest_line_m = 4;
+  r = AssembleBuildings({roof, above}, Flat(0));
+  ASSERT_EQ(r.model.buildings.size(), 1u);
+  EXPECT_EQ(r.plane_building[0], r.model.buildings[0].id);
+  // Nor is one whose companion still stands: the porch of
+  // AShortLinedPlaneIsKeptWhereItJoinsARoof is a convex part of its own.
+}
+
 TEST(AssembleBuildings, AShortLinedPlaneStandsAloneWhenItsLinesMakeASquareCorner) {
   // A lone garage, 2.6 x 2.6 m, flat roof at 2.3 m, its outline seen as
   // lines of 2.5 m: no roof to join, but two lines meet at a right angle.
