@@ -23,8 +23,8 @@ void KeepLargeAllocationsOnHeap();
 // mode, the tunable already set (a user's glibc.malloc.hugetlb=0 opts
 // out), or no exec possible. Call it before any thread starts, and only
 // where there are images to read: the second start costs about 0.1 s (on
-// the 2-core virtual machine: `roofsweep help` 0.14 s alone, 0.24 s
-// restarted), all of a small command's time.
+// the 2-core virtual machine: `roofsweep help` 0.12-0.14 s alone,
+// `run --help` 0.22-0.24 s restarted), all of a small command's time.
 //
 // Why: the heap policy above keeps pages once they are in, but the first
 // touch of every 4 KB page of an image, a Lab plane or a raster still

@@ -685,10 +685,10 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // whatever its height: its lines decide, if one of them crosses the
     // baselines (see VerifyOptions::height_from_crossing_lines).
     const bool height_fails = v.score < std::max(v.score_below, v.score_above) + o.min_margin;
-    const bool crossing = LineCrossesBaseline(parallax, p.lines_xy, o.crossing_line_min_length_m,
-                                              o.crossing_line_min_angle_deg);
     const bool on_lines =
-        height_fails && crossing &&
+        height_fails &&
+        LineCrossesBaseline(parallax, p.lines_xy, o.crossing_line_min_length_m,
+                            o.crossing_line_min_angle_deg) &&
         ((o.height_from_crossing_lines &&
           v.offset_m * ParallaxAcrossTexture(parallax, at.texture) < o.ncc_radius) ||
          (o.height_from_outline && v.below_difference > 0 && v.above_difference > 0 &&
