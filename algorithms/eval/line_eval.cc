@@ -260,12 +260,15 @@ LineScores EvaluateLines(const std::vector<Segment3>& result,
     const double c = CoveredLength(l, res_grid, options, cos_angle);
     s.roof_edge_length_m += l.Length();
     s.roof_edge_covered_m += c;
+    s.reference_covered_each_m.push_back(c);
   }
   s.reference_length_m = s.roof_edge_length_m;
   s.reference_covered_m = s.roof_edge_covered_m;
   for (const auto& l : extra_reference) {
+    const double c = CoveredLength(l, res_grid, options, cos_angle);
     s.reference_length_m += l.Length();
-    s.reference_covered_m += CoveredLength(l, res_grid, options, cos_angle);
+    s.reference_covered_m += c;
+    s.reference_covered_each_m.push_back(c);
   }
   return s;
 }

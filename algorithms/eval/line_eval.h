@@ -52,6 +52,9 @@ struct LineScores {
   // Result length on a clutter segment and on no reference segment (part of
   // result_on_reference_m).
   double result_on_clutter_m = 0;
+  // Covered length of each reference segment: the roof edges, then the
+  // extra reference segments, in their order.
+  std::vector<double> reference_covered_each_m;
 };
 
 // Length-based comparison. precision = result_on_reference_m / result_length_m,

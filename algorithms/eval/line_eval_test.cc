@@ -83,6 +83,10 @@ TEST(EvaluateLines, HalfTheEdgesGiveHalfCompleteness) {
   const LineScores s = EvaluateLines(half, edges, {}, {});
   EXPECT_NEAR(s.reference_covered_m / s.reference_length_m, 0.5, 1e-12);
   EXPECT_NEAR(s.result_on_reference_m / s.result_length_m, 1.0, 1e-12);
+  // Edge by edge: the two given whole, the other two not at all.
+  ASSERT_EQ(s.reference_covered_each_m.size(), 4u);
+  for (size_t k = 0; k < 4; ++k)
+    EXPECT_NEAR(s.reference_covered_each_m[k], k < 2 ? edges[k].Length() : 0.0, 1e-12) << k;
   // Half of each edge (up to its midpoint): the reference is covered up to
   // 10 cm beyond each half's end, so 0.5 + 4 * 0.1 / 36, to the 2 cm sampling.
   std::vector<Segment3> halves;
@@ -136,6 +140,8 @@ TEST(EvaluateLines, ExtraReferenceSegmentsCountInCompletenessOnly) {
   const std::vector<Segment3> marking = {{V(0, -5, 0), V(12, -5, 0)}};
   const LineScores s = EvaluateLines(edges, edges, marking, {});
   EXPECT_NEAR(s.reference_length_m, 48, 1e-9);
+  ASSERT_EQ(s.reference_covered_each_m.size(), edges.size() + 1);  // the marking comes last
+  EXPECT_EQ(s.reference_covered_each_m.back(), 0.0);
   EXPECT_NEAR(s.reference_covered_m / s.reference_length_m, 36.0 / 48.0, 1e-12);
   EXPECT_NEAR(s.roof_edge_covered_m / s.roof_edge_length_m, 1.0, 1e-12);
   std::vector<Segment3> with_marking = edges;

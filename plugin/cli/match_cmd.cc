@@ -36,7 +36,12 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
       .Option("-tile_buffer", &r.tile_buffer_m, "M", "match this far around the tile (default 30)")
       .Option("-truth", &r.truth, "FILE",
               "groundtruth_edges.json of `roofsweep simulate` (true-pair counts and line scores), "
-              "or an Oxford VGG set folder (match precision/recall against nview-lines)");
+              "or an Oxford VGG set folder (match precision/recall against nview-lines)")
+      .Option("-truth_edges", &r.truth_edges_output, "FILE",
+              "with a simulator's -truth: write every true edge (layer truth_edges) with how far "
+              "matching got on it: views and view pairs holding a segment on it, the pairs along "
+              "its epipolar lines, the furthest stage a true pair reached, the reach category of "
+              "the summary, and the length the 3D lines cover (10 cm, 10 deg)");
   flags.Add(p, &r.match, &r.edges);
   p.Example("roofsweep match out/block -o lines3d.gpkg")
       .Example("roofsweep match sim/block.json -o l.gpkg -truth sim/groundtruth_edges.json")
@@ -52,6 +57,12 @@ int Match(const std::vector<std::string>& args, Context& ctx) {
   if (r.output.empty()) throw UsageError("Missing option -o FILE", p.Synopsis());
   RequireVectorFormat(p, r.output, r.format);
   RequireNewOutput(p, r.output, r.overwrite);
+  if (!r.truth_edges_output.empty()) {
+    if (r.truth.empty())
+      throw UsageError("Option -truth_edges needs -truth (groundtruth_edges.json)", p.Synopsis());
+    RequireVectorFormat(p, r.truth_edges_output, "");
+    RequireNewOutput(p, r.truth_edges_output, r.overwrite);
+  }
   const MatchSummary s = RunMatch(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatMatchSummary(s);

@@ -72,6 +72,21 @@ eval::MatchScores ScoreAgainstVgg(const orientation::VggLineAnnotations& a, cons
   return eval::EvaluateMatches(result.segments, observations, lines, t);
 }
 
+// Names of TruthEdgeReach::stage.
+const char* ReachStageName(int stage) {
+  static const char* const kNames[] = {"none",        "eligible", "geometric",   "chromatic",
+                                       "correlation", "verified", "unambiguous", "one-to-one"};
+  return stage >= 0 && stage < 8 ? kNames[stage] : "?";
+}
+
+// Why matching could or could not reach an edge, as the summary counts it.
+const char* ReachCategory(const TruthEdgeReach& r) {
+  if (r.stage >= 1) return "within reach";
+  if (r.views < 2) return "in fewer than two views";
+  if (r.view_pairs > 0 && r.along_epipolar == r.view_pairs) return "along the epipolar lines";
+  return "other";
+}
+
 }  // namespace
 
 eval::SurfaceAgreement LinesOnSurfaceModel(const Block& block, const std::vector<Line3D>& lines) {
@@ -109,6 +124,15 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   // Refuse an existing output, an unknown format or bad creation options
   // before the work, not after it.
   CheckFeatureLayerOutput(r.output, lo);
+  FeatureLayerOptions truth_lo;
+  truth_lo.overwrite = r.overwrite;
+  if (!r.truth_edges_output.empty()) {
+    if (r.truth.empty() || std::filesystem::is_directory(r.truth))
+      throw Error("-truth_edges needs -truth with the groundtruth_edges.json of a simulated block");
+    if (r.truth_edges_output == r.output)
+      throw Error("-truth_edges must name another file than -o: " + r.output);
+    CheckFeatureLayerOutput(r.truth_edges_output, truth_lo);
+  }
   auto t0 = std::chrono::steady_clock::now();
   BlockManifest manifest = OpenBlockManifest(r.block);
   if (r.aoi) manifest.aoi = r.aoi;
@@ -161,13 +185,50 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   if (!r.truth.empty() && !vgg) {
     std::vector<Segment3> lines, roof, extra, clutter;
     for (const Line3D& l : out.result.lines) lines.push_back(l.segment);
-    for (size_t k = 0; k < truth.segments.size(); ++k)
-      (IsRoofKind(truth.segments[k].kind)                                  ? roof
-       : truth.segments[k].kind == sim::EdgeKindName(sim::EdgeKind::kProp) ? clutter
-                                                                           : extra)
-          .push_back(truth_local[k]);
+    // Where each true edge went: roof (index), extra (roof.size() + index
+    // once all are known: negative until then), clutter (none).
+    std::vector<int> place(truth.segments.size(), 0);
+    std::vector<char> is_clutter(truth.segments.size(), 0);
+    for (size_t k = 0; k < truth.segments.size(); ++k) {
+      if (IsRoofKind(truth.segments[k].kind)) {
+        place[k] = static_cast<int>(roof.size());
+        roof.push_back(truth_local[k]);
+      } else if (truth.segments[k].kind == sim::EdgeKindName(sim::EdgeKind::kProp)) {
+        place[k] = static_cast<int>(clutter.size());
+        is_clutter[k] = 1;
+        clutter.push_back(truth_local[k]);
+      } else {
+        place[k] = -1 - static_cast<int>(extra.size());
+        extra.push_back(truth_local[k]);
+      }
+    }
     const eval::LineScores s =
         eval::EvaluateLines(lines, roof, extra, eval::LineEvalOptions{}, nullptr, &clutter);
+    if (!r.truth_edges_output.empty()) {
+      // Props are no reference (they count in precision only): their
+      // coverage is measured apart.
+      const eval::LineScores c = eval::EvaluateLines(lines, {}, clutter, eval::LineEvalOptions{});
+      const std::vector<TruthEdgeReach>& reach = out.result.truth_edges;
+      for (size_t k = 0; k < truth.segments.size() && k < reach.size(); ++k) {
+        const LabelledSegment& t = truth.segments[k];
+        LayerFeature f;
+        f.lines.push_back({output_xyz(truth_local[k].a), output_xyz(truth_local[k].b)});
+        f.strings["kind"] = t.kind;
+        f.integers["building"] = t.building;
+        f.reals["length_m"] = truth_local[k].Length();
+        f.reals["covered_m"] = is_clutter[k] ? c.reference_covered_each_m[place[k]]
+                               : place[k] >= 0
+                                   ? s.reference_covered_each_m[place[k]]
+                                   : s.reference_covered_each_m[roof.size() + (-1 - place[k])];
+        f.integers["views"] = reach[k].views;
+        f.integers["view_pairs"] = reach[k].view_pairs;
+        f.integers["pairs_along_epipolar"] = reach[k].along_epipolar;
+        f.integers["stage"] = reach[k].stage;
+        f.strings["stage_name"] = ReachStageName(reach[k].stage);
+        f.strings["reach"] = ReachCategory(reach[k]);
+        out.truth_edge_features.push_back(std::move(f));
+      }
+    }
     if (s.result_length_m > 0) out.precision = s.result_on_reference_m / s.result_length_m;
     if (s.reference_length_m > 0) out.completeness = s.reference_covered_m / s.reference_length_m;
     if (s.roof_edge_length_m > 0)
@@ -177,11 +238,12 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
       if (!IsRoofKind(truth.segments[k].kind)) continue;
       const double len = truth_local[k].Length();
       out.roof_edge_m += len;
-      if (reach[k].stage >= 1)
+      const std::string why = ReachCategory(reach[k]);
+      if (why == "within reach")
         out.roof_reachable_m += len;
-      else if (reach[k].views < 2)
+      else if (why == "in fewer than two views")
         out.roof_one_view_m += len;
-      else if (reach[k].view_pairs > 0 && reach[k].along_epipolar == reach[k].view_pairs)
+      else if (why == "along the epipolar lines")
         out.roof_along_epipolar_m += len;
     }
   }
@@ -196,6 +258,11 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
            : !r.assign_crs.empty() ? r.assign_crs
                                    : manifest.crs;
   WriteFeatureLayer(r.output, "lines3d", LayerGeometry::kLineStringZ, features, lo);
+  if (!r.truth_edges_output.empty()) {
+    truth_lo.crs = lo.crs;
+    WriteFeatureLayer(r.truth_edges_output, "truth_edges", LayerGeometry::kLineStringZ,
+                      out.truth_edge_features, truth_lo);
+  }
   out.write_s = Since(t0);
   progress.Update(1.0, "done");
   return out;

@@ -27,6 +27,11 @@ struct MatchRequest {
   // folder of an Oxford VGG set (scores the matches against its annotated
   // line correspondences, nview-lines, and the 3D lines against l3d).
   std::string truth;
+  // With a simulator's truth: every true edge written to this file as a
+  // LineStringZ layer "truth_edges" with how far matching got on it
+  // (TruthEdgeReach, the reach category of the summary, the length the 3D
+  // lines cover within 10 cm and 10 deg); empty: none.
+  std::string truth_edges_output;
   // One tile of the block in the block CRS (min x, min y, max x, max y),
   // replacing the manifest's aoi; as for `run`, only the views and image
   // windows that see it and tile_buffer_m around it are read, so that a
@@ -52,6 +57,8 @@ struct MatchSummary {
   std::optional<eval::MatchScores> annotated;
   // When the block has a surface model (ground/dsm): the 3D lines against it.
   std::optional<eval::SurfaceAgreement> surface;
+  // With truth_edges_output: one feature per true edge.
+  std::vector<LayerFeature> truth_edge_features;
 };
 
 // `roofsweep match`: reads the block and its images, extracts segments,

@@ -351,13 +351,27 @@ PY
 
 # match -truth says how much roof edge a true pair could reach at all. One
 # strip: its edges along the flight line lie along every pair's epipolar
-# lines, so part of the roof edge is out of reach.
+# lines, so part of the roof edge is out of reach. -truth_edges writes the
+# same edge by edge: its sums must give the summary's figures.
 test_match_truth_reach() {
   small_block || return
-  expect_ok match_truth match "$SIM" -o "$WORK/m.gpkg" -truth "$SIM/groundtruth_edges.json" || return
-  python3 - "$WORK/stdout.txt" <<'PY' && pass match_truth_reach || fail match_truth_reach "$(grep -i 'roof edges' "$WORK/stdout.txt")"
-import re, sys
+  expect_ok match_truth match "$SIM" -o "$WORK/m.gpkg" -truth "$SIM/groundtruth_edges.json" \
+    -truth_edges "$WORK/te.gpkg" || return
+  python3 - "$WORK/stdout.txt" "$WORK/te.gpkg" <<'PY' && pass match_truth_reach || fail match_truth_reach "$(grep -i 'roof edges' "$WORK/stdout.txt")"
+import re, sqlite3, sys
 text = open(sys.argv[1]).read()
+roof = ("ridge", "hip", "valley", "break", "eave", "verge", "wall_top", "step", "party", "roof_other")
+rows = sqlite3.connect(sys.argv[2]).execute(
+    "select kind, reach, length_m, covered_m, stage, views from truth_edges").fetchall()
+assert rows, "no true edge written"
+by = {}
+for kind, reach, length, covered, stage, views in rows:
+    assert 0 <= covered <= length + 1e-6 and 0 <= stage <= 7 and views >= 0, (kind, length, covered)
+    assert (reach == "within reach") == (stage >= 1), (reach, stage)
+    if kind in roof:
+        by[reach] = by.get(reach, 0) + length
+        by["covered"] = by.get("covered", 0) + covered
+roof_m = sum(v for k, v in by.items() if k != "covered")
 m = re.search(r"Roof edges within reach of a true pair: ([\d.]+)% of (\d+) m; out of reach: ([\d.]+)% "
               r"along the epipolar lines of every pair that sees them, ([\d.]+)% detected in fewer "
               r"than two views, ([\d.]+)% other", text)
@@ -368,7 +382,14 @@ assert along > 0, m.groups()
 done = float(re.search(r"roof-edge completeness ([\d.]+)%", text).group(1))
 # Lines outside the candidates' reach come only from junction completion.
 assert done < reach + along + 1, (done, m.groups())
+assert abs(roof_m - total) < 1, (roof_m, total)
+for name, printed in (("within reach", reach), ("along the epipolar lines", along),
+                      ("in fewer than two views", one), ("other", other)):
+    assert abs(100 * by.get(name, 0) / roof_m - printed) < 0.06, (name, by, m.groups())
+assert abs(100 * by["covered"] / roof_m - done) < 0.06, (by["covered"], roof_m, done)
 PY
+  expect_fail match_truth_edges_without_truth "$WORK/te2.gpkg" "-truth_edges needs -truth" -- \
+    match "$SIM" -o "$WORK/m2.gpkg" -truth_edges "$WORK/te2.gpkg"
 }
 
 # Plan centroids of the top-level buildings of a CityGML file (mean of the
