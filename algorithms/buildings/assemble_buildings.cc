@@ -322,16 +322,18 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
   std::vector<char> cornered(attached.size());
   for (size_t a = 0; a < attached.size(); ++a)
     cornered[a] = o.keep_right_corners && HasRightCorner(planes[attached[a]], o);
+  // Every plane it meets is recorded (kept_for), so the passing planes'
+  // grown patches are made once.
+  std::vector<Ring2> grown_keep(n_keep);
+  for (size_t k = 0; k < n_keep; ++k)
+    grown_keep[k] = GrowConvex(planes[keep[k]].patch, o.adjacency_gap_m);
   for (size_t a = 0; a < attached.size(); ++a) {
     const int i = attached[a];
     const RoofPlaneHypothesis& p = planes[i];
     const Ring2 grown = GrowConvex(p.patch, o.adjacency_gap_m);
     std::vector<int> meets;
-    for (size_t k = 0; k < n_keep; ++k) {
-      const RoofPlaneHypothesis& q = planes[keep[k]];
-      if (PlanesMeet(p, grown, q, GrowConvex(q.patch, o.adjacency_gap_m), o))
-        meets.push_back(keep[k]);
-    }
+    for (size_t k = 0; k < n_keep; ++k)
+      if (PlanesMeet(p, grown, planes[keep[k]], grown_keep[k], o)) meets.push_back(keep[k]);
     for (size_t b = 0;
          b < attached.size() && meets.empty() && !cornered[a] && o.join_gable_to_corners; ++b) {
       const RoofPlaneHypothesis& q = planes[attached[b]];

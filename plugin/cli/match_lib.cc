@@ -80,11 +80,19 @@ const char* ReachStageName(int stage) {
 }
 
 // Why matching could or could not reach an edge, as the summary counts it.
-const char* ReachCategory(const TruthEdgeReach& r) {
-  if (r.stage >= 1) return "within reach";
-  if (r.views < 2) return "in fewer than two views";
-  if (r.view_pairs > 0 && r.along_epipolar == r.view_pairs) return "along the epipolar lines";
-  return "other";
+enum class Reach { kWithin, kFewerViews, kAlongEpipolar, kOther };
+
+Reach ReachOf(const TruthEdgeReach& r) {
+  if (r.stage >= 1) return Reach::kWithin;
+  if (r.views < 2) return Reach::kFewerViews;
+  if (r.view_pairs > 0 && r.along_epipolar == r.view_pairs) return Reach::kAlongEpipolar;
+  return Reach::kOther;
+}
+
+const char* ReachName(Reach r) {
+  static const char* const kNames[] = {"within reach", "in fewer than two views",
+                                       "along the epipolar lines", "other"};
+  return kNames[static_cast<int>(r)];
 }
 
 }  // namespace
@@ -185,20 +193,17 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
   if (!r.truth.empty() && !vgg) {
     std::vector<Segment3> lines, roof, extra, clutter;
     for (const Line3D& l : out.result.lines) lines.push_back(l.segment);
-    // Where each true edge went: roof (index), extra (roof.size() + index
-    // once all are known: negative until then), clutter (none).
-    std::vector<int> place(truth.segments.size(), 0);
-    std::vector<char> is_clutter(truth.segments.size(), 0);
+    // The true edge behind each entry of roof, extra and clutter.
+    std::vector<size_t> roof_of, extra_of, clutter_of;
     for (size_t k = 0; k < truth.segments.size(); ++k) {
       if (IsRoofKind(truth.segments[k].kind)) {
-        place[k] = static_cast<int>(roof.size());
+        roof_of.push_back(k);
         roof.push_back(truth_local[k]);
       } else if (truth.segments[k].kind == sim::EdgeKindName(sim::EdgeKind::kProp)) {
-        place[k] = static_cast<int>(clutter.size());
-        is_clutter[k] = 1;
+        clutter_of.push_back(k);
         clutter.push_back(truth_local[k]);
       } else {
-        place[k] = -1 - static_cast<int>(extra.size());
+        extra_of.push_back(k);
         extra.push_back(truth_local[k]);
       }
     }
@@ -208,6 +213,13 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
       // Props are no reference (they count in precision only): their
       // coverage is measured apart.
       const eval::LineScores c = eval::EvaluateLines(lines, {}, clutter, eval::LineEvalOptions{});
+      std::vector<double> covered(truth.segments.size(), 0.0);
+      for (size_t j = 0; j < roof_of.size(); ++j)
+        covered[roof_of[j]] = s.reference_covered_each_m[j];
+      for (size_t j = 0; j < extra_of.size(); ++j)
+        covered[extra_of[j]] = s.reference_covered_each_m[roof.size() + j];
+      for (size_t j = 0; j < clutter_of.size(); ++j)
+        covered[clutter_of[j]] = c.reference_covered_each_m[j];
       const std::vector<TruthEdgeReach>& reach = out.result.truth_edges;
       for (size_t k = 0; k < truth.segments.size() && k < reach.size(); ++k) {
         const LabelledSegment& t = truth.segments[k];
@@ -216,16 +228,13 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
         f.strings["kind"] = t.kind;
         f.integers["building"] = t.building;
         f.reals["length_m"] = truth_local[k].Length();
-        f.reals["covered_m"] = is_clutter[k] ? c.reference_covered_each_m[place[k]]
-                               : place[k] >= 0
-                                   ? s.reference_covered_each_m[place[k]]
-                                   : s.reference_covered_each_m[roof.size() + (-1 - place[k])];
+        f.reals["covered_m"] = covered[k];
         f.integers["views"] = reach[k].views;
         f.integers["view_pairs"] = reach[k].view_pairs;
         f.integers["pairs_along_epipolar"] = reach[k].along_epipolar;
         f.integers["stage"] = reach[k].stage;
         f.strings["stage_name"] = ReachStageName(reach[k].stage);
-        f.strings["reach"] = ReachCategory(reach[k]);
+        f.strings["reach"] = ReachName(ReachOf(reach[k]));
         out.truth_edge_features.push_back(std::move(f));
       }
     }
@@ -238,13 +247,19 @@ MatchSummary RunMatch(const MatchRequest& r, Progress& progress) {
       if (!IsRoofKind(truth.segments[k].kind)) continue;
       const double len = truth_local[k].Length();
       out.roof_edge_m += len;
-      const std::string why = ReachCategory(reach[k]);
-      if (why == "within reach")
-        out.roof_reachable_m += len;
-      else if (why == "in fewer than two views")
-        out.roof_one_view_m += len;
-      else if (why == "along the epipolar lines")
-        out.roof_along_epipolar_m += len;
+      switch (ReachOf(reach[k])) {
+        case Reach::kWithin:
+          out.roof_reachable_m += len;
+          break;
+        case Reach::kFewerViews:
+          out.roof_one_view_m += len;
+          break;
+        case Reach::kAlongEpipolar:
+          out.roof_along_epipolar_m += len;
+          break;
+        case Reach::kOther:
+          break;
+      }
     }
   }
 
