@@ -32,6 +32,15 @@ std::optional<Eigen::Vector3d> IntersectHorizontalPlane(const Ray& ray, double h
   return ray.origin + t * ray.direction;
 }
 
+std::optional<Eigen::Vector3d> IntersectPlane(const Ray& ray, const Eigen::Vector4d& plane,
+                                              double min_incidence) {
+  const double denom = plane.head<3>().dot(ray.direction);
+  if (!(std::abs(denom) >= min_incidence)) return std::nullopt;
+  const double t = -(plane.head<3>().dot(ray.origin) + plane[3]) / denom;
+  if (!(t > 0)) return std::nullopt;
+  return ray.origin + t * ray.direction;
+}
+
 void DecomposeProjection(const Matrix34d& P_in, Eigen::Matrix3d* K, Eigen::Matrix3d* R,
                          Eigen::Vector3d* C) {
   Matrix34d P = P_in;

@@ -49,6 +49,12 @@ Ray BackProject(const Camera& camera, const Pose& pose, const Eigen::Vector2d& p
 // Intersection of a ray with the plane z = height, if it meets it in front.
 std::optional<Eigen::Vector3d> IntersectHorizontalPlane(const Ray& ray, double height);
 
+// Intersection of a ray with the plane n . X + d = 0 (n unit), if it meets
+// it in front and at |cos| >= min_incidence between the ray and n: rays
+// grazing a plane place the point badly.
+std::optional<Eigen::Vector3d> IntersectPlane(const Ray& ray, const Eigen::Vector4d& plane,
+                                              double min_incidence = 1e-12);
+
 // Splits P into K (positive diagonal, K(2,2) = 1), a rotation R (det +1) and
 // the centre C, by RQ decomposition. The overall sign of P is chosen so that
 // points with positive depth are in front.

@@ -38,6 +38,21 @@ TEST(View, ProjectAndBackProjectAgree) {
   EXPECT_LT((*back - px).norm(), 1e-6);
 }
 
+TEST(View, RayMeetsASlopedPlaneInFrontAndNotAtGrazingIncidence) {
+  Ray ray{{0, 0, 100}, {0, 0, -1}};
+  // z = 10 + x tan 30: the normal is 30 degrees off vertical.
+  const double s = std::sin(M_PI / 6), c = std::cos(M_PI / 6);
+  const Eigen::Vector4d plane(-s, 0, c, -10 * c);
+  const auto hit = IntersectPlane(ray, plane);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(plane.head<3>().dot(*hit) + plane[3], 0, 1e-9);
+  EXPECT_NEAR(hit->z(), 10, 1e-9);
+  EXPECT_TRUE(IntersectPlane(ray, plane, 0.8));   // cos 30 = 0.87
+  EXPECT_FALSE(IntersectPlane(ray, plane, 0.9));  // too grazing
+  ray.direction = -ray.direction;                 // the plane lies behind
+  EXPECT_FALSE(IntersectPlane(ray, plane));
+}
+
 TEST(View, PointBehindCameraDoesNotProject) {
   Pose pose;
   pose.R = PatbToCv(OpkToRotation(0, 0, 0));

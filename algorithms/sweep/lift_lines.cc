@@ -20,12 +20,7 @@ constexpr double kDegToRad = M_PI / 180.0;
 std::optional<Eigen::Vector3d> OntoPlane(const Camera& cam, const Pose& pose,
                                          const Eigen::Vector2d& px, const Eigen::Vector4d& plane,
                                          double min_incidence) {
-  const Ray ray = BackProject(cam, pose, px);
-  const double denom = plane.head<3>().dot(ray.direction);
-  if (std::abs(denom) < min_incidence) return std::nullopt;
-  const double t = -(plane.head<3>().dot(ray.origin) + plane[3]) / denom;
-  if (t <= 0) return std::nullopt;
-  return ray.origin + t * ray.direction;
+  return IntersectPlane(BackProject(cam, pose, px), plane, min_incidence);
 }
 
 // The part [t0, t1] of the plan segment a-b inside the convex ring (CCW);
