@@ -20,6 +20,9 @@ test_run_writes_valid_closed_lod2() {
     && pass run_merge_stage || fail run_merge_stage "$(grep -i coplanar "$WORK/stdout.txt")"
   grep -Eq "^flat planes beyond eaves +[0-9]+ dropped" "$WORK/stdout.txt" \
     && pass run_eave_stage || fail run_eave_stage "$(grep -i eaves "$WORK/stdout.txt")"
+  grep -Eq "^faces grown to their eaves +[0-9]+ eaves found below [0-9]+ planes, [0-9]+ patches grown" \
+    "$WORK/stdout.txt" && pass run_eave_search_stage \
+    || fail run_eave_search_stage "$(grep -i eaves "$WORK/stdout.txt")"
   local n
   n=$(grep -c "<bldg:Building " "$WORK/b.gml" || true)
   [[ $n -gt 0 ]] && pass run_builds_buildings || fail run_builds_buildings "no building in b.gml"
@@ -417,28 +420,43 @@ test_run_tiles() {
   small_block || return
   expect_ok tile_whole run "$SIM" -o "$WORK/whole.gml" -q || return
   centroids "$WORK/whole.gml" >"$WORK/whole.txt"
-  local split lo
-  split=$(sort -k2 -g "$WORK/whole.txt" | awk 'NR==1{a=$2} NR==2{printf "%.3f", (a+$2)/2}')
+  # The split runs between the first two buildings across the axis along
+  # which they lie farthest apart: a few decimetres of difference between
+  # a tile's run and the whole run must not carry a building across it.
+  local axis split lo
+  read -r axis split lo < <(python3 - "$WORK/whole.txt" <<'PY'
+import sys
+rows = [tuple(map(float, l.split()[1:3])) for l in open(sys.argv[1])]
+if len(rows) >= 2:
+    a, b = rows[0], rows[1]
+    k = 0 if abs(a[0] - b[0]) >= abs(a[1] - b[1]) else 1
+    print(k, "%.3f" % ((a[k] + b[k]) / 2), min(r[1 - k] for r in rows))
+PY
+  )
   [[ -n "$split" ]] || { fail tile_split "fewer than two buildings: $(cat "$WORK/whole.txt")"; return; }
-  lo=$(awk '{print $3}' "$WORK/whole.txt" | sort -g | head -1)
-  local y0 y1 x0 x1
-  y0=$(python3 -c "print($lo - 500)"); y1=$(python3 -c "print($lo + 500)")
+  # A tile from FROM to TO across the split axis, 1 km wide along the other.
+  tile_box() {
+    if [[ $axis == 0 ]]; then echo "$1,$(python3 -c "print($lo - 500)"),$2,$(python3 -c "print($lo + 500)")"
+    else echo "$(python3 -c "print($lo - 500)"),$1,$(python3 -c "print($lo + 500)"),$2"; fi
+  }
+  local x0 x1
   x0=$(python3 -c "print($split - 500)"); x1=$(python3 -c "print($split + 500)")
-  expect_ok tile_west run "$SIM" -aoi "$x0,$y0,$split,$y1" -o "$WORK/west.gml" || return
+  expect_ok tile_west run "$SIM" -aoi "$(tile_box "$x0" "$split")" -o "$WORK/west.gml" || return
   grep -Eq "^tile: [0-9]+ of 4 views see it and its 30 m buffer; [0-9.]+ of [0-9.]+ megapixels read" \
     "$WORK/stdout.txt" && pass tile_message || fail tile_message "$(grep -i tile "$WORK/stdout.txt")"
   grep -Eq "^tile +[0-9]+ of [0-9]+ buildings in the tile" "$WORK/stdout.txt" \
     && pass tile_stage || fail tile_stage "$(grep -i tile "$WORK/stdout.txt")"
-  expect_ok tile_east run "$SIM" -aoi "$split,$y0,$x1,$y1" -o "$WORK/east.gml" -q || return
+  expect_ok tile_east run "$SIM" -aoi "$(tile_box "$split" "$x1")" -o "$WORK/east.gml" -q || return
   centroids "$WORK/west.gml" >"$WORK/west.txt"
   centroids "$WORK/east.gml" >"$WORK/east.txt"
-  python3 - "$WORK/whole.txt" "$WORK/west.txt" "$WORK/east.txt" "$split" <<'PY' \
+  python3 - "$WORK/whole.txt" "$WORK/west.txt" "$WORK/east.txt" "$split" "$axis" <<'PY' \
     && pass tile_buildings_once || fail tile_buildings_once "$(cat "$WORK"/{whole,west,east}.txt)"
 import sys
 read = lambda f: [(l.split()[0], float(l.split()[1]), float(l.split()[2])) for l in open(f)]
 whole, west, east, split = read(sys.argv[1]), read(sys.argv[2]), read(sys.argv[3]), float(sys.argv[4])
+k = 1 + int(sys.argv[5])
 assert west and east, "a tile without buildings"
-assert all(x < split for _, x, _ in west) and all(x >= split for _, x, _ in east)
+assert all(r[k] < split for r in west) and all(r[k] >= split for r in east)
 ids = [i for i, _, _ in west + east]
 assert len(set(ids)) == len(ids), "an id twice"
 assert all(i.startswith("t") and "_rs_b" in i for i in ids), ids
@@ -450,9 +468,9 @@ for _, x, y in whole:
 PY
   # With footprints, each footprint's own centre decides its tile: no
   # footprint id in both, and the tile's report says why the others went.
-  expect_ok tile_fp_west run "$SIM" -aoi "$x0,$y0,$split,$y1" -footprints "$SIM/footprints.gpkg" \
+  expect_ok tile_fp_west run "$SIM" -aoi "$(tile_box "$x0" "$split")" -footprints "$SIM/footprints.gpkg" \
     -o "$WORK/fw.gml" -report "$WORK/fw.json" -q || return
-  expect_ok tile_fp_east run "$SIM" -aoi "$split,$y0,$x1,$y1" -footprints "$SIM/footprints.gpkg" \
+  expect_ok tile_fp_east run "$SIM" -aoi "$(tile_box "$split" "$x1")" -footprints "$SIM/footprints.gpkg" \
     -o "$WORK/fe.gml" -q || return
   python3 - "$WORK/fw.gml" "$WORK/fe.gml" "$WORK/fw.json" <<'PY' && pass tile_fp_once || fail tile_fp_once "see the tiles"
 import json, re, sys
@@ -555,7 +573,8 @@ PY
     -truth "$SIM/groundtruth_edges.json" -o "$WORK/t.gpkg"
   # A tile the images do not see, and a malformed one.
   expect_fail tile_unseen "$WORK/far.gml" "no image sees the tile" -- run "$SIM" \
-    -aoi "$(python3 -c "print($split + 1e5)"),$y0,$(python3 -c "print($split + 1e5 + 10)"),$y1" -o "$WORK/far.gml"
+    -aoi "$(tile_box "$(python3 -c "print($split + 1e5)")" "$(python3 -c "print($split + 1e5 + 10)")")" \
+    -o "$WORK/far.gml"
   expect_fail tile_bad_aoi "$WORK/bad.gml" "aoi" -- run "$SIM" -aoi 5,5,1,1 -o "$WORK/bad.gml"
 }
 
