@@ -493,12 +493,19 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   };
 
   std::vector<RoofPlaneHypothesis> roof_planes;
+  // The views' image segments, for the lifts and the eave search: those
+  // matching found, or found again when the lines were read from a file.
+  std::vector<Segments2D> image_segments;
+  auto view_segments = [&]() -> const std::vector<Segments2D>& {
+    if (image_segments.empty())
+      image_segments = r.lines_in.empty() ? std::move(matched.segments)
+                                          : ExtractViewSegments(images, r.match, r.edges);
+    return image_segments;
+  };
   if (two_passes) {
     roof_planes = find_planes(lines, hps, false, 0.6, 0.62);
     t0 = Clock::now();
-    std::vector<Segments2D> segments = r.lines_in.empty()
-                                           ? std::move(matched.segments)
-                                           : ExtractViewSegments(images, r.match, r.edges);
+    const std::vector<Segments2D>& segments = view_segments();
     std::vector<std::vector<bool>> used(segments.size());
     for (size_t v = 0; v < segments.size(); ++v) used[v].assign(segments[v].size(), false);
     std::vector<Segment3> known;
@@ -632,6 +639,20 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
     return confirmed;
   };
+
+  // Faces cut short of their eaves, grown to them before the symmetry
+  // completion mirrors them.
+  if (r.eave_search) {
+    t0 = Clock::now();
+    const std::vector<FaceEave> eaves = FindEaves(block, view_segments(), roof_planes, r.eaves);
+    const std::vector<std::string> log = ExtendFacesToEaves(eaves, &roof_planes, r.eaves);
+    size_t grown = 0;
+    for (const std::string& m : log) grown += m.find(": patch grown") != std::string::npos;
+    out.stages.push_back({"faces grown to their eaves",
+                          StrFormat("%zu eaves found below %zu planes, %zu patches grown",
+                                    eaves.size(), roof_planes.size(), grown),
+                          Since(t0)});
+  }
 
   // Completion by symmetry: the face beyond each ridge the sweep found
   // from one side only, verified like the others; derived, so it yields

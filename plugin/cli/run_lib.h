@@ -17,6 +17,7 @@
 #include "algorithms/sweep/colour_breaks.h"
 #include "algorithms/sweep/coplanar_lines.h"
 #include "algorithms/sweep/eave_planes.h"
+#include "algorithms/sweep/eave_search.h"
 #include "algorithms/sweep/footprint_roof_search.h"
 #include "algorithms/sweep/lift_lines.h"
 #include "algorithms/sweep/merge_coplanar_neighbours.h"
@@ -110,6 +111,10 @@ struct RunRequest {
   // grouping and verification run again over all lines.
   bool lift_lines = true;
   LiftOptions lift;
+  // A sloped face whose patch stops short of its eave grows to the eave
+  // that image segments lifted onto its plane show (FindEaves).
+  bool eave_search = true;
+  EaveSearchOptions eaves;
   // Without footprints: terraced houses are cut apart where their shared
   // roof changes colour across its whole depth (FindColourBreaks), as
   // where a 3D line runs down a party wall (AssemblyOptions::

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/edges/segment2d.h"
+#include "algorithms/geometry/block.h"
+
+namespace roofsweep {
+
+// Options of FindEaves. Lengths in metres, in plan, unless named _px.
+struct EaveSearchOptions {
+  // The faces searched: sloped ones (a flat roof has no fall line).
+  double min_slope_deg = 10.0;
+  // The eave is looked for across this range down the fall line, from the
+  // lowest point of the face's lines (a verge's or a hip's lower end, where
+  // the eave begins): a little inside, and out to a verge that stops
+  // short of the eave by an overhang's width or a detector's gap. Further
+  // out, edges on the ground and the facades below come within reach of
+  // the lift (a 6 m wall seen 12 degrees off nadir lies 1.3 m out).
+  double search_from_m = -0.5;
+  double search_to_m = 0.5;
+  // The lowest point must end a line at least min_edge_m long that runs
+  // down the face: within acos(min_edge_cos) of the fall line in plan (a
+  // verge runs along it, a hip between equal pitches at 45 degrees).
+  double min_edge_m = 1.0;
+  double min_edge_cos = 0.6;
+  // A face with a line at least min_length_m long whose ends both lie
+  // within this distance of the lowest point of its lines, down the fall
+  // line, has its eave and is not searched.
+  double level_line_m = 0.3;
+  // Image segments lifted onto the plane count for one eave position when
+  // their lifts lie within this distance of it down the fall line (1.5 px
+  // at 5 cm), and run along the face's level direction within the angle.
+  double position_tolerance_m = 0.08;
+  double max_angle_deg = 5.0;
+  // Segments shorter than this (px) are left out: they say little of an
+  // edge's direction.
+  double min_segment_px = 10.0;
+  // Rays meeting the plane at a grazing angle place a lift badly.
+  double min_incidence = 0.25;
+  // A stretch of the eave counts when this many views see a lifted
+  // segment there (each view alone confirms any position of an edge along
+  // its own viewing direction).
+  int min_views = 2;
+  // The eave found must be held over this length, and over this fraction
+  // of the patch's extent along it.
+  double min_length_m = 2.0;
+  double min_fraction = 0.5;
+  // The growth fills space no other plane claims: it may take this
+  // fraction of the new area from other planes' patches (slivers along a
+  // shared edge), else the patch stays as it is. A completion does not
+  // overrule a plane found directly, and the growth into a neighbour's
+  // patch changes how the assembly groups and roofs both (20 % let a
+  // gable face join a false shed over a row on `realistic-13`).
+  double max_overlap_fraction = 0.05;
+};
+
+// An eave found for one face.
+struct FaceEave {
+  int plane = -1;        // index into the planes searched
+  Eigen::Vector2d a, b;  // its ends in plan, held by min_views views
+  double beyond_lines_m =
+      0;  // how far down the fall line it lies past the lowest point of the face's lines
+  double held_m = 0;  // length held by min_views views
+  int views = 0;      // views with a lifted segment on it
+};
+
+// Baillard & Zisserman (2000, §5) delineate a face by its border lines,
+// and a face whose patch stops short of its eave ends as a triangle or a
+// sliver: the sweep's patch is the hull of its lines, and an eave along
+// the flight line is matched by no pair of views of one strip (the
+// epipolar lines run along it). The plane fixes the eave's depth: the
+// eave is the level line of the face at its lowest edge, so only its
+// position down the fall line is unknown. Every image segment near that
+// stretch of the face is lifted onto the plane through its view's ray,
+// and the position where lifted segments of min_views views agree over
+// the longest stretch is the eave. A view along the eave cannot check
+// its depth, but the plane and the search range bound it.
+//
+// `segments`: per view, the image segments (texture marked; those are left
+// out: tile courses run along the eave). Deterministic.
+std::vector<FaceEave> FindEaves(const Block& block, const std::vector<Segments2D>& segments,
+                                const std::vector<RoofPlaneHypothesis>& planes,
+                                const EaveSearchOptions& options = {});
+
+// Grows each face's patch to the hull of the patch and its eave, unless
+// the grown part lies over other planes' patches (max_overlap_fraction).
+// Returns, per eave, what was done, for the log.
+std::vector<std::string> ExtendFacesToEaves(const std::vector<FaceEave>& eaves,
+                                            std::vector<RoofPlaneHypothesis>* planes,
+                                            const EaveSearchOptions& options = {});
+
+}  // namespace roofsweep

@@ -1,0 +1,154 @@
+#include "algorithms/sweep/eave_search.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/test_planes.h"
+#include "algorithms/geometry/test_blocks.h"
+#include "algorithms/geometry/view.h"
+
+namespace roofsweep {
+namespace {
+
+using Line2 = std::array<Eigen::Vector2d, 2>;
+
+// The north face of a gable, ridge along x at y = 0 and z = 10 over
+// x -5..5, falling 40 degrees towards +y to its eave at y = 5. The sweep
+// found it from its ridge and its west verge, whose lower end stops at
+// y = verge_end: the patch is the triangle of their ends. Three nadir
+// views 100 m up (10 cm GSD), two of them along x like a strip.
+struct EaveScene {
+  Block block = NadirTestBlock({{0, 0, 100}, {30, 0, 100}, {0, 30, 100}});
+  Eigen::Vector4d plane = SlopedPlane({0, 0, 10}, 40, 90);
+  std::vector<RoofPlaneHypothesis> planes;
+  std::vector<Segments2D> segments{3};
+
+  explicit EaveScene(double verge_end = 5.0) {
+    RoofPlaneHypothesis p = TestPlane(plane, {{-5, 0}, {5, 0}, {-5, verge_end}}, "north face");
+    p.lines_xy = {Line2{Eigen::Vector2d(-5, 0), Eigen::Vector2d(5, 0)},
+                  Line2{Eigen::Vector2d(-5, 0), Eigen::Vector2d(-5, verge_end)}};
+    p.lines = 2;
+    planes.push_back(p);
+  }
+  double Z(double x, double y) const {
+    return -(plane[0] * x + plane[1] * y + plane[3]) / plane[2];
+  }
+  Eigen::Vector3d OnFace(double x, double y) const { return {x, y, Z(x, y)}; }
+  // The edge a-b as the given views see it.
+  void See(const Eigen::Vector3d& a, const Eigen::Vector3d& b, std::vector<int> views = {0, 1, 2},
+           bool texture = false) {
+    for (int v : views) {
+      const View& view = block.views[v];
+      Segment2D s;
+      s.p0 = *Project(block.CameraOf(view), view.pose, a);
+      s.p1 = *Project(block.CameraOf(view), view.pose, b);
+      s.texture = texture;
+      segments[v].push_back(s);
+    }
+  }
+};
+
+TEST(FindEaves, TheEaveOfATriangleFromItsRidgeAndVergeIsFoundAndTheFaceGrowsToIt) {
+  EaveScene s;
+  s.See(s.OnFace(-5, 5), s.OnFace(5, 5));
+  const std::vector<FaceEave> eaves = FindEaves(s.block, s.segments, s.planes);
+  ASSERT_EQ(eaves.size(), 1u);
+  const FaceEave& e = eaves[0];
+  EXPECT_EQ(e.plane, 0);
+  EXPECT_EQ(e.views, 3);
+  EXPECT_NEAR(e.beyond_lines_m, 0.0, 1e-6);
+  EXPECT_NEAR(e.held_m, 10.0, 0.11);
+  EXPECT_NEAR(std::min(e.a.x(), e.b.x()), -5.0, 0.11);
+  EXPECT_NEAR(std::max(e.a.x(), e.b.x()), 5.0, 0.11);
+  EXPECT_NEAR(e.a.y(), 5.0, 1e-6);
+  EXPECT_NEAR(e.b.y(), 5.0, 1e-6);
+
+  EXPECT_NEAR(std::abs(SignedArea(s.planes[0].patch)), 25.0, 1e-9);
+  const std::vector<std::string> log = ExtendFacesToEaves(eaves, &s.planes);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find("patch grown"), std::string::npos) << log[0];
+  EXPECT_NEAR(std::abs(SignedArea(s.planes[0].patch)), 50.0, 1.0);
+}
+
+TEST(FindEaves, AnEavePastTheVergesEndIsFoundWithinTheSearchRange) {
+  EaveScene s(/*verge_end=*/4.6);
+  s.See(s.OnFace(-5, 5), s.OnFace(5, 5));
+  const std::vector<FaceEave> eaves = FindEaves(s.block, s.segments, s.planes);
+  ASSERT_EQ(eaves.size(), 1u);
+  EXPECT_NEAR(eaves[0].beyond_lines_m, 0.4, 1e-6);
+  EaveSearchOptions o;
+  o.search_to_m = 0.3;  // the same eave, out of reach
+  EXPECT_TRUE(FindEaves(s.block, s.segments, s.planes, o).empty());
+}
+
+TEST(FindEaves, OneViewAloneHoldsNoEave) {
+  EaveScene s;
+  s.See(s.OnFace(-5, 5), s.OnFace(5, 5), {0});
+  EXPECT_TRUE(FindEaves(s.block, s.segments, s.planes).empty());
+  EaveSearchOptions o;
+  o.min_views = 1;
+  EXPECT_EQ(FindEaves(s.block, s.segments, s.planes, o).size(), 1u);
+}
+
+TEST(FindEaves, TextureSegmentsAreLeftOutAndTheOuterOfEqualEdgesWins) {
+  EaveScene s;
+  // A tile course marked as texture just inside the eave: nothing.
+  s.See(s.OnFace(-5, 4.7), s.OnFace(5, 4.7), {0, 1, 2}, /*texture=*/true);
+  EXPECT_TRUE(FindEaves(s.block, s.segments, s.planes).empty());
+  // An unmarked course and the eave, both held over the whole face: the
+  // eave, at the face's edge.
+  s.See(s.OnFace(-5, 4.7), s.OnFace(5, 4.7));
+  s.See(s.OnFace(-5, 5), s.OnFace(5, 5));
+  const std::vector<FaceEave> eaves = FindEaves(s.block, s.segments, s.planes);
+  ASSERT_EQ(eaves.size(), 1u);
+  EXPECT_NEAR(eaves[0].a.y(), 5.0, 1e-6);
+}
+
+TEST(FindEaves, ShortEdgesAndFlatRoofsGiveNoEave) {
+  EaveScene s;
+  // Held over 1.5 m of the 10 m face.
+  s.See(s.OnFace(-5, 5), s.OnFace(-3.5, 5));
+  EXPECT_TRUE(FindEaves(s.block, s.segments, s.planes).empty());
+  // A flat roof has no fall line to search down.
+  EaveScene flat;
+  flat.plane = {0, 0, 1, -10};
+  flat.planes[0].plane = flat.plane;
+  flat.See(flat.OnFace(-5, 5), flat.OnFace(5, 5));
+  EXPECT_TRUE(FindEaves(flat.block, flat.segments, flat.planes).empty());
+}
+
+TEST(FindEaves, OnlyAFaceWhoseLowestLineRunsDownItIsSearched) {
+  // Its ridge, its verge down to y = 4.6 and a level line there, its eave
+  // found by the sweep: an edge 0.4 m further out (a gutter's shadow) is
+  // no eave of it.
+  EaveScene s(/*verge_end=*/4.6);
+  s.planes[0].lines_xy.push_back({Eigen::Vector2d(-4, 4.6), Eigen::Vector2d(5, 4.6)});
+  s.See(s.OnFace(-5, 5), s.OnFace(5, 5));
+  EXPECT_TRUE(FindEaves(s.block, s.segments, s.planes).empty());
+  // Shorter than min_length_m, the level line is no eave.
+  s.planes[0].lines_xy.back() = {Eigen::Vector2d(-4, 4.6), Eigen::Vector2d(-2.5, 4.6)};
+  EXPECT_EQ(FindEaves(s.block, s.segments, s.planes).size(), 1u);
+  // Without the verge, the lowest point ends no line down the face: the
+  // patch's low edge is wherever the sweep's band stopped.
+  s.planes[0].lines_xy.erase(s.planes[0].lines_xy.begin() + 1);
+  EXPECT_TRUE(FindEaves(s.block, s.segments, s.planes).empty());
+}
+
+TEST(ExtendFacesToEaves, AGrowthOverAnotherPlaneIsLeftOut) {
+  EaveScene s;
+  s.See(s.OnFace(-5, 5), s.OnFace(5, 5));
+  const std::vector<FaceEave> eaves = FindEaves(s.block, s.segments, s.planes);
+  ASSERT_EQ(eaves.size(), 1u);
+  // A neighbour's face where the triangle would grow.
+  s.planes.push_back(TestPlane({0, 0, 1, -8}, {{0, 0.5}, {5, 0.5}, {5, 5}, {0, 5}}, "neighbour"));
+  const Ring2 before = s.planes[0].patch;
+  const std::vector<std::string> log = ExtendFacesToEaves(eaves, &s.planes);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find("left out"), std::string::npos) << log[0];
+  EXPECT_EQ(s.planes[0].patch, before);
+}
+
+}  // namespace
+}  // namespace roofsweep
