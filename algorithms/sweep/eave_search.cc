@@ -120,7 +120,6 @@ std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segment
   // lines lie inside the face, the eave at its edge).
   const int bins = std::max(1, static_cast<int>(std::ceil(extent / kBinM)));
   const int nv = static_cast<int>(block.views.size());
-  std::vector<int> count(static_cast<size_t>(bins));
   std::vector<char> mark(static_cast<size_t>(bins) * nv);
   struct Best {
     double held = 0, s = 0;
