@@ -12,6 +12,7 @@
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/edges/segment_index.h"
 #include "algorithms/geometry/view.h"
+#include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
 namespace {
@@ -25,10 +26,6 @@ std::optional<Eigen::Vector3d> OntoPlane(const Camera& cam, const Pose& pose,
                                          const Eigen::Vector2d& px, const Eigen::Vector4d& plane,
                                          double min_incidence) {
   return IntersectPlane(BackProject(cam, pose, px), plane, min_incidence);
-}
-
-double PlaneZ(const Eigen::Vector4d& p, const Eigen::Vector2d& q) {
-  return -(p[0] * q.x() + p[1] * q.y() + p[3]) / p[2];
 }
 
 // A segment of one view lifted onto the plane: its position down the fall
@@ -85,7 +82,7 @@ std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segment
     for (double s : {s_from, s_to})
       for (double u : {u_min, u_max}) {
         const Eigen::Vector2d q = s * g + u * t;
-        const auto px = Project(cam, view.pose, {q.x(), q.y(), PlaneZ(p.plane, q)});
+        const auto px = Project(cam, view.pose, {q.x(), q.y(), PlaneZ(p.plane, q.x(), q.y())});
         if (!px) {
           seen = false;
           break;
@@ -201,42 +198,42 @@ std::vector<FaceEave> FindEaves(const Block& block, const std::vector<Segments2D
   return out;
 }
 
-std::vector<std::string> ExtendFacesToEaves(const std::vector<FaceEave>& eaves,
-                                            std::vector<RoofPlaneHypothesis>* planes,
-                                            const EaveSearchOptions& o) {
-  std::vector<std::string> log;
+int ExtendFacesToEaves(const std::vector<FaceEave>& eaves, std::vector<RoofPlaneHypothesis>* planes,
+                       const EaveSearchOptions& o, std::vector<std::string>* log) {
+  int grown = 0;
   char buf[240];
   for (const FaceEave& e : eaves) {
     RoofPlaneHypothesis& p = (*planes)[static_cast<size_t>(e.plane)];
     std::vector<Eigen::Vector2d> pts = p.patch;
     pts.push_back(e.a);
     pts.push_back(e.b);
-    Ring2 grown = ConvexHull(std::move(pts));
-    const double added = Area(grown) - Area(p.patch);
+    Ring2 grown_patch = ConvexHull(std::move(pts));
+    const double added = Area(grown_patch) - Area(p.patch);
     if (!(added > 1e-3)) continue;
     double taken = 0;
     for (size_t j = 0; j < planes->size(); ++j) {
       if (static_cast<int>(j) == e.plane) continue;
       const Ring2& q = (*planes)[j].patch;
       if (q.size() < 3) continue;
-      taken += Area(IntersectConvex(grown, q)) - Area(IntersectConvex(p.patch, q));
+      taken += Area(IntersectConvex(grown_patch, q)) - Area(IntersectConvex(p.patch, q));
     }
     if (taken > o.max_overlap_fraction * added) {
       std::snprintf(buf, sizeof buf,
                     "%s: eave %.1f m down the fall line left out: %.0f %% of the %.1f m2 it "
                     "adds lies under other planes",
                     p.id.c_str(), e.beyond_lines_m, 100 * taken / added, added);
-      log.push_back(buf);
+      if (log) log->push_back(buf);
       continue;
     }
     std::snprintf(buf, sizeof buf,
                   "%s: patch grown to its eave %.1f m down the fall line (%d views over %.1f m), "
                   "+%.1f m2",
                   p.id.c_str(), e.beyond_lines_m, e.views, e.held_m, added);
-    log.push_back(buf);
-    p.patch = std::move(grown);
+    if (log) log->push_back(buf);
+    p.patch = std::move(grown_patch);
+    ++grown;
   }
-  return log;
+  return grown;
 }
 
 }  // namespace roofsweep

@@ -61,8 +61,8 @@ struct EaveSearchOptions {
 struct FaceEave {
   int plane = -1;        // index into the planes searched
   Eigen::Vector2d a, b;  // its ends in plan, held by min_views views
-  double beyond_lines_m =
-      0;  // how far down the fall line it lies past the lowest point of the face's lines
+  // How far down the fall line it lies past the lowest point of the face's lines.
+  double beyond_lines_m = 0;
   double held_m = 0;  // length held by min_views views
   int views = 0;      // views with a lifted segment on it
 };
@@ -87,9 +87,10 @@ std::vector<FaceEave> FindEaves(const Block& block, const std::vector<Segments2D
 
 // Grows each face's patch to the hull of the patch and its eave, unless
 // the grown part lies over other planes' patches (max_overlap_fraction).
-// Returns, per eave, what was done, for the log.
-std::vector<std::string> ExtendFacesToEaves(const std::vector<FaceEave>& eaves,
-                                            std::vector<RoofPlaneHypothesis>* planes,
-                                            const EaveSearchOptions& options = {});
+// Returns how many patches grew; `log` (optional) gets one line per eave
+// that changed or would have changed its patch.
+int ExtendFacesToEaves(const std::vector<FaceEave>& eaves, std::vector<RoofPlaneHypothesis>* planes,
+                       const EaveSearchOptions& options = {},
+                       std::vector<std::string>* log = nullptr);
 
 }  // namespace roofsweep

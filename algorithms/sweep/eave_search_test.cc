@@ -66,7 +66,8 @@ TEST(FindEaves, TheEaveOfATriangleFromItsRidgeAndVergeIsFoundAndTheFaceGrowsToIt
   EXPECT_NEAR(e.b.y(), 5.0, 1e-6);
 
   EXPECT_NEAR(std::abs(SignedArea(s.planes[0].patch)), 25.0, 1e-9);
-  const std::vector<std::string> log = ExtendFacesToEaves(eaves, &s.planes);
+  std::vector<std::string> log;
+  EXPECT_EQ(ExtendFacesToEaves(eaves, &s.planes, {}, &log), 1);
   ASSERT_EQ(log.size(), 1u);
   EXPECT_NE(log[0].find("patch grown"), std::string::npos) << log[0];
   EXPECT_NEAR(std::abs(SignedArea(s.planes[0].patch)), 50.0, 1.0);
@@ -144,7 +145,8 @@ TEST(ExtendFacesToEaves, AGrowthOverAnotherPlaneIsLeftOut) {
   // A neighbour's face where the triangle would grow.
   s.planes.push_back(TestPlane({0, 0, 1, -8}, {{0, 0.5}, {5, 0.5}, {5, 5}, {0, 5}}, "neighbour"));
   const Ring2 before = s.planes[0].patch;
-  const std::vector<std::string> log = ExtendFacesToEaves(eaves, &s.planes);
+  std::vector<std::string> log;
+  EXPECT_EQ(ExtendFacesToEaves(eaves, &s.planes, {}, &log), 0);
   ASSERT_EQ(log.size(), 1u);
   EXPECT_NE(log[0].find("left out"), std::string::npos) << log[0];
   EXPECT_EQ(s.planes[0].patch, before);

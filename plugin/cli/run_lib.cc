@@ -645,11 +645,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   if (r.eave_search) {
     t0 = Clock::now();
     const std::vector<FaceEave> eaves = FindEaves(block, view_segments(), roof_planes, r.eaves);
-    const std::vector<std::string> log = ExtendFacesToEaves(eaves, &roof_planes, r.eaves);
-    size_t grown = 0;
-    for (const std::string& m : log) grown += m.find(": patch grown") != std::string::npos;
+    const int grown = ExtendFacesToEaves(eaves, &roof_planes, r.eaves);
     out.stages.push_back({"faces grown to their eaves",
-                          StrFormat("%zu eaves found below %zu planes, %zu patches grown",
+                          StrFormat("%zu eaves found below %zu planes, %d patches grown",
                                     eaves.size(), roof_planes.size(), grown),
                           Since(t0)});
   }
