@@ -236,4 +236,48 @@ int ExtendFacesToEaves(const std::vector<FaceEave>& eaves, std::vector<RoofPlane
   return grown;
 }
 
+int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes, const EaveSearchOptions& o,
+                           std::vector<std::string>* log) {
+  int cut = 0;
+  char buf[200];
+  for (RoofPlaneHypothesis& p : *planes) {
+    const Eigen::Vector3d n = p.plane.head<3>();
+    if (p.patch.size() < 3 || p.lines_xy.empty() || !(n.z() > 1e-3) ||
+        std::acos(std::clamp(n.z(), -1.0, 1.0)) < o.min_slope_deg * kDegToRad)
+      continue;
+    const Eigen::Vector2d g = n.head<2>().normalized();  // down the fall line
+    const Eigen::Vector2d t(-g.y(), g.x());              // level along the face
+    // Down the fall line (the eave) and both ways along the level (the verges).
+    Ring2 clipped = p.patch;
+    const std::array<Eigen::Vector2d, 3> ends = {g, t, -t};
+    for (size_t k = 0; k < ends.size(); ++k) {
+      const Eigen::Vector2d& e = ends[k];
+      double end = -1e300, start = 1e300;
+      for (const auto& l : p.lines_xy)
+        for (const Eigen::Vector2d& q : l) {
+          end = std::max(end, e.dot(q));
+          start = std::min(start, e.dot(q));
+        }
+      // Lines without depth down the face (a ridge alone, or with a
+      // chimney's edge beside it) do not tell whether the face hangs from
+      // them or rises from them. A verge is itself as deep as min_length_m.
+      if (k == 0 && end - start < o.clip_min_depth_m) continue;
+      for (const auto& l : p.lines_xy)
+        if ((l[1] - l[0]).norm() >= o.min_length_m && e.dot(l[0]) >= end - o.level_line_m &&
+            e.dot(l[1]) >= end - o.level_line_m) {
+          clipped = ClipHalfPlane(clipped, e.x(), e.y(), -(end + o.clip_beyond_m));
+          break;
+        }
+    }
+    const double removed = Area(p.patch) - Area(clipped);
+    if (clipped.size() < 3 || !(removed > 1e-3)) continue;
+    std::snprintf(buf, sizeof buf, "%s: patch cut by %.1f m2 to its border lines", p.id.c_str(),
+                  removed);
+    if (log) log->push_back(buf);
+    p.patch = std::move(clipped);
+    ++cut;
+  }
+  return cut;
+}
+
 }  // namespace roofsweep

@@ -55,6 +55,13 @@ struct EaveSearchOptions {
   // patch changes how the assembly groups and roofs both (20 % let a
   // gable face join a false shed over a row on `realistic-13`).
   double max_overlap_fraction = 0.05;
+  // ClipFacesAtBorderLines: how far a patch may run past the eave or verge
+  // line that bounds the face's lines (the line may lie a gutter's width
+  // inside the roof's edge, and its ends are placed to a few centimetres).
+  double clip_beyond_m = 0.3;
+  // ... and only when the face's lines span this depth down the fall line:
+  // a level line alone may be the face's ridge as well as its eave.
+  double clip_min_depth_m = 1.0;
 };
 
 // An eave found for one face.
@@ -92,5 +99,22 @@ std::vector<FaceEave> FindEaves(const Block& block, const std::vector<Segments2D
 int ExtendFacesToEaves(const std::vector<FaceEave>& eaves, std::vector<RoofPlaneHypothesis>* planes,
                        const EaveSearchOptions& options = {},
                        std::vector<std::string>* log = nullptr);
+
+// Baillard & Zisserman (2000, §5) bound a face by its border lines; the
+// sweep's patch is the hull of its lines and of their half-planes' strips,
+// and a strip reaches as far at either end of its line. At the foot of a
+// hip or past a gable's verge it then runs over the wall and the ground.
+// A face ends at its eave and at its verges when it has them: where a line
+// of at least min_length_m lies along the outermost points of the face's
+// lines down the fall line, or along the level direction either way (both
+// of its ends within level_line_m of them), the part of the patch further
+// than clip_beyond_m past them is cut off; down the fall line only when
+// the lines span clip_min_depth_m there. Not up the fall line: a ridge
+// found with little else below it would cut its face to a sliver. Flat
+// faces (under min_slope_deg) are left alone. Returns how many patches
+// were cut; `log` (optional) gets one line per cut.
+int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes,
+                           const EaveSearchOptions& options = {},
+                           std::vector<std::string>* log = nullptr);
 
 }  // namespace roofsweep

@@ -152,5 +152,87 @@ TEST(ExtendFacesToEaves, AGrowthOverAnotherPlaneIsLeftOut) {
   EXPECT_EQ(s.planes[0].patch, before);
 }
 
+TEST(ClipFacesAtBorderLines, APatchRunningPastItsEaveLineEndsThere) {
+  EaveScene s;
+  // Ridge and eave found; the patch runs 3 m past the eave (a hip's strip
+  // reaching over the ground at the hip's foot).
+  s.planes[0].lines_xy = {Line2{Eigen::Vector2d(-5, 0), Eigen::Vector2d(5, 0)},
+                          Line2{Eigen::Vector2d(-5, 5), Eigen::Vector2d(5, 5)}};
+  s.planes[0].patch = {{-5, 0}, {5, 0}, {5, 8}, {-5, 8}};
+  std::vector<std::string> log;
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes, {}, &log), 1);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find("north face: patch cut by 27.0 m2"), std::string::npos) << log[0];
+  EXPECT_NEAR(std::abs(SignedArea(s.planes[0].patch)), 53.0, 1e-9);
+  for (const Eigen::Vector2d& q : s.planes[0].patch) EXPECT_LE(q.y(), 5.3 + 1e-9);
+  // Already within the margin: nothing to cut.
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+}
+
+TEST(ClipFacesAtBorderLines, OnlyALevelLineAtTheBottomOfTheLinesIsAnEave) {
+  EaveScene s;
+  const Ring2 patch = {{-5, 0}, {5, 0}, {5, 8}, {-5, 8}};
+  s.planes[0].patch = patch;
+  // Ridge and verge: the lowest point ends a line down the face.
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  // A level line above the lowest point (a course of tiles, a dormer's
+  // foot) is no eave.
+  s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-4, 3), Eigen::Vector2d(4, 3)});
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  // Nor is one shorter than min_length_m at the bottom.
+  s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-4, 5), Eigen::Vector2d(-2.5, 5)});
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  // A flat roof has no fall line to cut along.
+  s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-4, 5), Eigen::Vector2d(4, 5)});
+  s.planes[0].plane = Eigen::Vector4d(0, 0, 1, -8);
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  EXPECT_EQ(s.planes[0].patch, patch);
+}
+
+TEST(ClipFacesAtBorderLines, APatchRunningPastAVergeAtTheEndOfItsLinesEndsThere) {
+  EaveScene s;
+  // Ridge, eave and west verge found; the patch runs 4 m past the verge (a
+  // strip carried beyond the gable end over the ground).
+  s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-5, 5), Eigen::Vector2d(5, 5)});
+  s.planes[0].patch = {{-9, 0}, {5, 0}, {5, 5}, {-9, 5}};
+  std::vector<std::string> log;
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes, {}, &log), 1);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find("north face: patch cut by 18.5 m2"), std::string::npos) << log[0];
+  for (const Eigen::Vector2d& q : s.planes[0].patch) EXPECT_GE(q.x(), -5.3 - 1e-9);
+  // The east end has no verge (the ridge and the eave just stop there): the
+  // lines do not tell where the face ends, and the patch may run on.
+  s.planes[0].patch = {{-5, 0}, {9, 0}, {9, 5}, {-5, 5}};
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+}
+
+TEST(ClipFacesAtBorderLines, ARidgeCutsNothingUpTheFace) {
+  EaveScene s;
+  // The ridge's strip on the far side of the ridge: only eaves and verges
+  // end a face (a ridge found alone would cut its own face to a sliver).
+  s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-5, 5), Eigen::Vector2d(5, 5)});
+  const Ring2 patch = {{-5, -3}, {5, -3}, {5, 5}, {-5, 5}};
+  s.planes[0].patch = patch;
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  EXPECT_EQ(s.planes[0].patch, patch);
+}
+
+TEST(ClipFacesAtBorderLines, ALevelLineWithoutDepthAboveItCutsNothing) {
+  EaveScene s;
+  // Only level lines near the ridge (the ridge and a chimney's edge): the
+  // lowest of them may as well be the top of the face as its foot.
+  s.planes[0].lines_xy = {Line2{Eigen::Vector2d(-5, 0), Eigen::Vector2d(5, 0)},
+                          Line2{Eigen::Vector2d(1, 0.4), Eigen::Vector2d(3.5, 0.4)}};
+  const Ring2 patch = {{-5, 0}, {5, 0}, {5, 5}, {-5, 5}};
+  s.planes[0].patch = patch;
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  EXPECT_EQ(s.planes[0].patch, patch);
+  // Where less depth is asked for, the lower one ends the face.
+  EaveSearchOptions o;
+  o.clip_min_depth_m = 0.3;
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes, o), 1);
+  for (const Eigen::Vector2d& q : s.planes[0].patch) EXPECT_LE(q.y(), 0.7 + 1e-9);
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -33,8 +33,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
   bool no_mirror = false, no_colour_breaks = false, no_growth = false, no_merge = false,
-       no_lift = false, no_eaves = false, flat_only = false, no_beyond = false, no_pieces = false,
-       no_lod1 = false;
+       no_lift = false, no_eaves = false, no_border_clip = false, flat_only = false,
+       no_beyond = false, no_pieces = false, no_lod1 = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -97,6 +97,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "one pass only: do not lift the image segments no 3D line explains onto the roof "
             "planes found (where a view across them confirms the depth) and sweep again with "
             "those that bound a plane")
+      .Flag("-no_border_clip", &no_border_clip,
+            "let a sloped face's patch run on past the eave or verge line that bounds its lines "
+            "(a hip's or verge's sweep strip over the wall and the ground)")
       .Flag("-no_eave_search", &no_eaves,
             "do not grow a sloped face whose patch stops short of its eave to the level line "
             "of its plane where image segments of two views lifted onto the plane agree")
@@ -143,6 +146,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.mirror_faces = !no_mirror;
   r.lift_lines = !no_lift;
   r.eave_search = !no_eaves;
+  r.border_clip = !no_border_clip;
   r.footprint_growth = !no_growth;
   r.roof_models_over_footprints = !flat_only;
   r.roofs_beyond_ridges = !no_beyond;

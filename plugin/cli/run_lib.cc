@@ -640,6 +640,15 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     return confirmed;
   };
 
+  // Patches that run past the eave or verge bounding their lines, cut
+  // back before the eave search and the mirror take them as they are.
+  if (r.border_clip) {
+    t0 = Clock::now();
+    const int cut = ClipFacesAtBorderLines(&roof_planes, r.eaves);
+    out.stages.push_back({"faces cut at their border lines",
+                          StrFormat("%d of %zu patches cut", cut, roof_planes.size()), Since(t0)});
+  }
+
   // Faces cut short of their eaves, grown to them before the symmetry
   // completion mirrors them.
   if (r.eave_search) {

@@ -23,6 +23,8 @@ test_run_writes_valid_closed_lod2() {
   grep -Eq "^faces grown to their eaves +[0-9]+ eaves found below [0-9]+ planes, [0-9]+ patches grown" \
     "$WORK/stdout.txt" && pass run_eave_search_stage \
     || fail run_eave_search_stage "$(grep -i eaves "$WORK/stdout.txt")"
+  grep -Eq "^faces cut at their border lines +[0-9]+ of [0-9]+ patches cut" "$WORK/stdout.txt" \
+    && pass run_border_clip_stage || fail run_border_clip_stage "$(grep -i border "$WORK/stdout.txt")"
   local n
   n=$(grep -c "<bldg:Building " "$WORK/b.gml" || true)
   [[ $n -gt 0 ]] && pass run_builds_buildings || fail run_builds_buildings "no building in b.gml"
