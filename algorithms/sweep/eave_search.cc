@@ -35,15 +35,35 @@ struct Lift {
   int view = -1;
 };
 
+// Down the fall line of a sloped face (min_slope_deg or more) with a
+// patch; none for a flat one, which has no eave to tell.
+std::optional<Eigen::Vector2d> DownTheFallLine(const RoofPlaneHypothesis& p, double min_slope_deg) {
+  const Eigen::Vector3d n = p.plane.head<3>();
+  if (p.patch.size() < 3 || !(n.z() > 1e-3) ||
+      std::acos(std::clamp(n.z(), -1.0, 1.0)) < min_slope_deg * kDegToRad)
+    return std::nullopt;
+  return Eigen::Vector2d(n.head<2>().normalized());
+}
+
+// True when a line of at least min_length_m lies along `end`, the
+// outermost position of the face's lines in direction e: both of its ends
+// within level_line_m of it (the eave below the lines, a verge beside them).
+bool LineAlongEnd(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double end,
+                  const EaveSearchOptions& o) {
+  for (const auto& l : p.lines_xy)
+    if ((l[1] - l[0]).norm() >= o.min_length_m && e.dot(l[0]) >= end - o.level_line_m &&
+        e.dot(l[1]) >= end - o.level_line_m)
+      return true;
+  return false;
+}
+
 std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segments2D>& segments,
                                    const std::vector<SegmentIndex>& index,
                                    const RoofPlaneHypothesis& p, const EaveSearchOptions& o) {
-  const Eigen::Vector3d n = p.plane.head<3>();
-  if (p.patch.size() < 3 || !(n.z() > 1e-3) ||
-      std::acos(std::clamp(n.z(), -1.0, 1.0)) < o.min_slope_deg * kDegToRad)
-    return std::nullopt;
-  const Eigen::Vector2d g = n.head<2>().normalized();  // down the fall line
-  const Eigen::Vector2d t(-g.y(), g.x());              // level along the face
+  const std::optional<Eigen::Vector2d> fall = DownTheFallLine(p, o.min_slope_deg);
+  if (!fall) return std::nullopt;
+  const Eigen::Vector2d g = *fall;         // down the fall line
+  const Eigen::Vector2d t(-g.y(), g.x());  // level along the face
   double s_low = -1e300, u_min = 1e300, u_max = -1e300;
   for (const Eigen::Vector2d& q : p.patch) {
     u_min = std::min(u_min, t.dot(q));
@@ -64,10 +84,7 @@ std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segment
   // A face whose lowest line is level already has its eave: beyond it lie
   // the gutter's shadow, the facade and the ground, whose edges a view
   // along them places anywhere down the fall line.
-  for (const auto& l : p.lines_xy)
-    if ((l[1] - l[0]).norm() >= o.min_length_m && g.dot(l[0]) >= s_low - o.level_line_m &&
-        g.dot(l[1]) >= s_low - o.level_line_m)
-      return std::nullopt;
+  if (LineAlongEnd(p, g, s_low, o)) return std::nullopt;
   const double s_from = s_low + o.search_from_m, s_to = s_low + o.search_to_m;
   const double extent = u_max - u_min;
   if (extent < o.min_length_m) return std::nullopt;
@@ -241,12 +258,10 @@ int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes, const EaveS
   int cut = 0;
   char buf[200];
   for (RoofPlaneHypothesis& p : *planes) {
-    const Eigen::Vector3d n = p.plane.head<3>();
-    if (p.patch.size() < 3 || p.lines_xy.empty() || !(n.z() > 1e-3) ||
-        std::acos(std::clamp(n.z(), -1.0, 1.0)) < o.min_slope_deg * kDegToRad)
-      continue;
-    const Eigen::Vector2d g = n.head<2>().normalized();  // down the fall line
-    const Eigen::Vector2d t(-g.y(), g.x());              // level along the face
+    const std::optional<Eigen::Vector2d> fall = DownTheFallLine(p, o.min_slope_deg);
+    if (!fall || p.lines_xy.empty()) continue;
+    const Eigen::Vector2d g = *fall;         // down the fall line
+    const Eigen::Vector2d t(-g.y(), g.x());  // level along the face
     // Down the fall line (the eave) and both ways along the level (the verges).
     Ring2 clipped = p.patch;
     const std::array<Eigen::Vector2d, 3> ends = {g, t, -t};
@@ -262,12 +277,8 @@ int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes, const EaveS
       // chimney's edge beside it) do not tell whether the face hangs from
       // them or rises from them. A verge is itself as deep as min_length_m.
       if (k == 0 && end - start < o.clip_min_depth_m) continue;
-      for (const auto& l : p.lines_xy)
-        if ((l[1] - l[0]).norm() >= o.min_length_m && e.dot(l[0]) >= end - o.level_line_m &&
-            e.dot(l[1]) >= end - o.level_line_m) {
-          clipped = ClipHalfPlane(clipped, e.x(), e.y(), -(end + o.clip_beyond_m));
-          break;
-        }
+      if (LineAlongEnd(p, e, end, o))
+        clipped = ClipHalfPlane(clipped, e.x(), e.y(), -(end + o.clip_beyond_m));
     }
     const double removed = Area(p.patch) - Area(clipped);
     if (clipped.size() < 3 || !(removed > 1e-3)) continue;
