@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/edges/segment_index.h"
@@ -196,6 +197,49 @@ std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segment
 
 double Area(const Ring2& r) { return r.size() < 3 ? 0.0 : std::abs(SignedArea(r)); }
 
+// Cuts `clipped` clip_beyond_m past the line of min_length_m that lies
+// along the outermost point of the face's lines in direction e, if there
+// is one and the lines span min_depth_m that way.
+void CutPastEndLine(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double min_depth_m,
+                    const EaveSearchOptions& o, Ring2* clipped) {
+  double end = -1e300, start = 1e300;
+  for (const auto& l : p.lines_xy)
+    for (const Eigen::Vector2d& q : l) {
+      end = std::max(end, e.dot(q));
+      start = std::min(start, e.dot(q));
+    }
+  if (end - start >= min_depth_m && LineAlongEnd(p, e, end, o))
+    *clipped = ClipHalfPlane(*clipped, e.x(), e.y(), -(end + o.clip_beyond_m));
+}
+
+// The directions a face is cut in. A sloped face: down the fall line (the
+// eave, when the lines span clip_min_depth_m that way: a ridge alone, or
+// with a chimney's edge beside it, does not tell whether the face hangs
+// from it or rises from it) and both ways along the level (the verges; a
+// verge is itself as deep as min_length_m). A flat face has no fall line:
+// each of its lines of min_length_m or more gives two directions, across
+// it both ways, each with the depth rule (a lone edge does not tell on
+// which side its roof lies).
+std::vector<std::pair<Eigen::Vector2d, double>> CutDirections(
+    const RoofPlaneHypothesis& p, const std::optional<Eigen::Vector2d>& fall,
+    const EaveSearchOptions& o) {
+  std::vector<std::pair<Eigen::Vector2d, double>> out;
+  if (fall) {
+    const Eigen::Vector2d g = *fall;         // down the fall line
+    const Eigen::Vector2d t(-g.y(), g.x());  // level along the face
+    out = {{g, o.clip_min_depth_m}, {t, 0.0}, {-t, 0.0}};
+    return out;
+  }
+  for (const auto& l : p.lines_xy) {
+    const Eigen::Vector2d d = l[1] - l[0];
+    if (d.norm() < o.min_length_m) continue;
+    const Eigen::Vector2d n = Eigen::Vector2d(-d.y(), d.x()).normalized();
+    out.emplace_back(n, o.clip_min_depth_m);
+    out.emplace_back(-n, o.clip_min_depth_m);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<FaceEave> FindEaves(const Block& block, const std::vector<Segments2D>& segments,
@@ -258,32 +302,17 @@ int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes, const EaveS
   int cut = 0;
   char buf[200];
   for (RoofPlaneHypothesis& p : *planes) {
+    if (p.lines_xy.empty() || p.patch.size() < 3) continue;
     const std::optional<Eigen::Vector2d> fall = DownTheFallLine(p, o.min_slope_deg);
-    if (!fall || p.lines_xy.empty()) continue;
-    const Eigen::Vector2d g = *fall;         // down the fall line
-    const Eigen::Vector2d t(-g.y(), g.x());  // level along the face
-    // Down the fall line (the eave) and both ways along the level (the verges).
+    const bool flat = p.plane.z() >= std::cos(o.flat_max_slope_deg * kDegToRad);
+    if (!fall && !(o.clip_flat && flat)) continue;
     Ring2 clipped = p.patch;
-    const std::array<Eigen::Vector2d, 3> ends = {g, t, -t};
-    for (size_t k = 0; k < ends.size(); ++k) {
-      const Eigen::Vector2d& e = ends[k];
-      double end = -1e300, start = 1e300;
-      for (const auto& l : p.lines_xy)
-        for (const Eigen::Vector2d& q : l) {
-          end = std::max(end, e.dot(q));
-          start = std::min(start, e.dot(q));
-        }
-      // Lines without depth down the face (a ridge alone, or with a
-      // chimney's edge beside it) do not tell whether the face hangs from
-      // them or rises from them. A verge is itself as deep as min_length_m.
-      if (k == 0 && end - start < o.clip_min_depth_m) continue;
-      if (LineAlongEnd(p, e, end, o))
-        clipped = ClipHalfPlane(clipped, e.x(), e.y(), -(end + o.clip_beyond_m));
-    }
+    for (const auto& [e, min_depth_m] : CutDirections(p, fall, o))
+      CutPastEndLine(p, e, min_depth_m, o, &clipped);
     const double removed = Area(p.patch) - Area(clipped);
     if (clipped.size() < 3 || !(removed > 1e-3)) continue;
-    std::snprintf(buf, sizeof buf, "%s: patch cut by %.1f m2 to its border lines", p.id.c_str(),
-                  removed);
+    std::snprintf(buf, sizeof buf, "%s: %spatch cut by %.1f m2 to its border lines", p.id.c_str(),
+                  fall ? "" : "flat ", removed);
     if (log) log->push_back(buf);
     p.patch = std::move(clipped);
     ++cut;

@@ -182,11 +182,62 @@ TEST(ClipFacesAtBorderLines, OnlyALevelLineAtTheBottomOfTheLinesIsAnEave) {
   // Nor is one shorter than min_length_m at the bottom.
   s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-4, 5), Eigen::Vector2d(-2.5, 5)});
   EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
-  // A flat roof has no fall line to cut along.
+  // A flat roof has no fall line to cut along: without clip_flat, a line
+  // at the end of its lines cuts nothing.
   s.planes[0].lines_xy.push_back(Line2{Eigen::Vector2d(-4, 5), Eigen::Vector2d(4, 5)});
   s.planes[0].plane = Eigen::Vector4d(0, 0, 1, -8);
-  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes), 0);
+  EaveSearchOptions no_flat;
+  no_flat.clip_flat = false;
+  EXPECT_EQ(ClipFacesAtBorderLines(&s.planes, no_flat), 0);
   EXPECT_EQ(s.planes[0].patch, patch);
+}
+
+// A flat roof 10 x 6 m at z = 8 whose west edge, south edge and north edge
+// were found; its patch runs 2.6 m west past the west edge (a terraced
+// row's roof over its lower neighbour's).
+RoofPlaneHypothesis FlatRoof() {
+  RoofPlaneHypothesis p =
+      TestPlane({0, 0, 1, -8}, {{-2.6, 0}, {10, 0}, {10, 6}, {-2.6, 6}}, "flat roof");
+  p.lines_xy = {Line2{Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 6)},
+                Line2{Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 0)},
+                Line2{Eigen::Vector2d(0, 6), Eigen::Vector2d(10, 6)}};
+  p.lines = 3;
+  return p;
+}
+
+TEST(ClipFacesAtBorderLines, AFlatRoofRunningPastTheLineAtTheEndOfItsLinesEndsThere) {
+  std::vector<RoofPlaneHypothesis> planes = {FlatRoof()};
+  std::vector<std::string> log;
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes, {}, &log), 1);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find("flat roof: flat patch cut by 13.8 m2"), std::string::npos) << log[0];
+  double x_min = 1e300, x_max = -1e300;
+  for (const Eigen::Vector2d& q : planes[0].patch) {
+    x_min = std::min(x_min, q.x());
+    x_max = std::max(x_max, q.x());
+  }
+  EXPECT_NEAR(x_min, -0.3, 1e-9);
+  // No line ends the roof in the east: the patch keeps its east edge.
+  EXPECT_NEAR(x_max, 10, 1e-9);
+  EXPECT_NEAR(std::abs(SignedArea(planes[0].patch)), 61.8, 1e-9);
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes), 0);
+}
+
+TEST(ClipFacesAtBorderLines, AFlatRoofsLinesWithoutDepthCutNothing) {
+  // Its west edge alone: the roof may lie on either side of it.
+  std::vector<RoofPlaneHypothesis> planes = {FlatRoof()};
+  planes[0].lines_xy.resize(1);
+  planes[0].patch = {{-3, 0}, {3, 0}, {3, 6}, {-3, 6}};
+  const Ring2 patch = planes[0].patch;
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes), 0);
+  EXPECT_EQ(planes[0].patch, patch);
+  // The south edge and a line shorter than min_length_m up from its west
+  // end: the lines have depth northwards, but no long line ends them there,
+  // and the short line gives no direction to cut across.
+  planes[0].lines_xy = {Line2{Eigen::Vector2d(-1.5, 0), Eigen::Vector2d(3, 0)},
+                        Line2{Eigen::Vector2d(-1.5, 0), Eigen::Vector2d(-1.5, 1.5)}};
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes), 0);
+  EXPECT_EQ(planes[0].patch, patch);
 }
 
 TEST(ClipFacesAtBorderLines, APatchRunningPastAVergeAtTheEndOfItsLinesEndsThere) {
