@@ -124,8 +124,9 @@ int ExtendFacesToEaves(const std::vector<FaceEave>& eaves, std::vector<RoofPlane
 // found with little else below it would cut its face to a sliver. A flat
 // face (under flat_max_slope_deg; with clip_flat) is cut the same way across
 // each of its lines of min_length_m, both ways, where its lines span
-// clip_min_depth_m. Returns how many patches were cut; `log` (optional)
-// gets one line per cut.
+// clip_min_depth_m. Faces between flat_max_slope_deg and min_slope_deg are
+// left alone. Returns how many patches were cut; `log` (optional) gets one
+// line per cut.
 int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes,
                            const EaveSearchOptions& options = {},
                            std::vector<std::string>* log = nullptr);
