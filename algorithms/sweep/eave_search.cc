@@ -223,13 +223,12 @@ void CutPastEndLine(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, doub
 std::vector<std::pair<Eigen::Vector2d, double>> CutDirections(
     const RoofPlaneHypothesis& p, const std::optional<Eigen::Vector2d>& fall,
     const EaveSearchOptions& o) {
-  std::vector<std::pair<Eigen::Vector2d, double>> out;
   if (fall) {
     const Eigen::Vector2d g = *fall;         // down the fall line
     const Eigen::Vector2d t(-g.y(), g.x());  // level along the face
-    out = {{g, o.clip_min_depth_m}, {t, 0.0}, {-t, 0.0}};
-    return out;
+    return {{g, o.clip_min_depth_m}, {t, 0.0}, {-t, 0.0}};
   }
+  std::vector<std::pair<Eigen::Vector2d, double>> out;
   for (const auto& l : p.lines_xy) {
     const Eigen::Vector2d d = l[1] - l[0];
     if (d.norm() < o.min_length_m) continue;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/test_planes.h"
 #include "algorithms/geometry/test_blocks.h"
 #include "algorithms/geometry/view.h"
@@ -211,14 +212,10 @@ TEST(ClipFacesAtBorderLines, AFlatRoofRunningPastTheLineAtTheEndOfItsLinesEndsTh
   EXPECT_EQ(ClipFacesAtBorderLines(&planes, {}, &log), 1);
   ASSERT_EQ(log.size(), 1u);
   EXPECT_NE(log[0].find("flat roof: flat patch cut by 13.8 m2"), std::string::npos) << log[0];
-  double x_min = 1e300, x_max = -1e300;
-  for (const Eigen::Vector2d& q : planes[0].patch) {
-    x_min = std::min(x_min, q.x());
-    x_max = std::max(x_max, q.x());
-  }
-  EXPECT_NEAR(x_min, -0.3, 1e-9);
+  const Eigen::Vector4d bounds = RingBounds(planes[0].patch);  // x0, y0, x1, y1
+  EXPECT_NEAR(bounds[0], -0.3, 1e-9);
   // No line ends the roof in the east: the patch keeps its east edge.
-  EXPECT_NEAR(x_max, 10, 1e-9);
+  EXPECT_NEAR(bounds[2], 10, 1e-9);
   EXPECT_NEAR(std::abs(SignedArea(planes[0].patch)), 61.8, 1e-9);
   EXPECT_EQ(ClipFacesAtBorderLines(&planes), 0);
 }
