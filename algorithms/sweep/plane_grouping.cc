@@ -523,6 +523,16 @@ std::vector<std::string> DropOrphanedPlanes(std::vector<RoofPlaneHypothesis>* pl
   return reasons;
 }
 
+std::vector<std::string> SettleVerifiedPlanes(std::vector<RoofPlaneHypothesis>* planes,
+                                              const GroupingOptions& o) {
+  std::vector<std::string> reasons = DropOrphanedPlanes(planes, o);
+  const std::vector<std::string> conflicts = ResolveConflicts(planes, o);
+  reasons.insert(reasons.end(), conflicts.begin(), conflicts.end());
+  const std::vector<std::string> orphans = DropOrphanedPlanes(planes, o);
+  reasons.insert(reasons.end(), orphans.begin(), orphans.end());
+  return reasons;
+}
+
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups,
                                               const std::vector<SweepLine>* lines) {
   std::vector<RoofPlaneHypothesis> out;

@@ -161,6 +161,15 @@ std::vector<std::string> DropWeaklySupported(std::vector<PlaneGroup>* planes,
 std::vector<std::string> DropOrphanedPlanes(std::vector<RoofPlaneHypothesis>* planes,
                                             const GroupingOptions& options);
 
+// §5 for the verified planes: the orphans (DropOrphanedPlanes) among all
+// of them first, then the conflicts (ResolveConflicts), then the planes the
+// conflicts left orphaned. A plane without a partner among all the
+// verified planes has none among the fewer the conflicts leave, so it goes
+// whatever the conflicts decide; dropped first, it cannot push out a plane
+// that would have stayed. Returns the reasons, in that order.
+std::vector<std::string> SettleVerifiedPlanes(std::vector<RoofPlaneHypothesis>* planes,
+                                              const GroupingOptions& options);
+
 // The groups as the building assembly takes them; with `lines` (the
 // grouping's input) each carries the plan view of its lines.
 std::vector<RoofPlaneHypothesis> ToRoofPlanes(const std::vector<PlaneGroup>& groups,

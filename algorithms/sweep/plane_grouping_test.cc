@@ -610,6 +610,34 @@ TEST(PlaneGrouping, APlaneWhoseVirtualLinePartnerIsRejectedGoesToo) {
   EXPECT_EQ(planes.size(), 1u);
 }
 
+// A garage's flat roof (three lines) under a stronger sloped plane of one
+// line, say a wall top swept at the wrong angle, that meets no other plane.
+// A garage on `easy` was lost to such a plane, which the orphan check then
+// dropped as well. Settled with the orphans first, the garage stays.
+TEST(PlaneGrouping, APlaneThatWillBeOrphanedPushesNoPlaneOut) {
+  const GroupingOptions o;
+  const Eigen::Vector3d up(0, 0, 1), tilted = Eigen::Vector3d(0, -0.5, 1).normalized();
+  auto planes = [&] {
+    return std::vector<RoofPlaneHypothesis>{
+        WithSimilarity(Face("wall top", tilted, {0, 0, -5}, -5, -1, 10, 4, 60), 0.6, 1),
+        WithSimilarity(Face("garage", up, {0, 0, 3}, 0, 0, 3, 3, 9), 0.8, 3, 3)};
+  };
+  // The conflicts alone, then the orphans: both go.
+  std::vector<RoofPlaneHypothesis> apart = planes();
+  const std::vector<std::string> conflicts = ResolveConflicts(&apart, o);
+  ASSERT_EQ(conflicts.size(), 1u);
+  EXPECT_EQ(conflicts[0].rfind("garage: overlaps the stronger wall top", 0), 0u) << conflicts[0];
+  EXPECT_EQ(DropOrphanedPlanes(&apart, o).size(), 1u);
+  EXPECT_TRUE(apart.empty());
+
+  std::vector<RoofPlaneHypothesis> settled = planes();
+  const std::vector<std::string> reasons = SettleVerifiedPlanes(&settled, o);
+  ASSERT_EQ(reasons.size(), 1u);
+  EXPECT_EQ(reasons[0].rfind("wall top: 1 supporting line(s) < 2", 0), 0u) << reasons[0];
+  ASSERT_EQ(settled.size(), 1u);
+  EXPECT_EQ(settled[0].id, "garage");
+}
+
 TEST(PlaneGrouping, PlanesNeedTwoLines) {
   std::vector<PlaneGroup> planes(3);
   planes[0].lines = {4};

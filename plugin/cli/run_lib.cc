@@ -480,10 +480,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<RoofPlaneHypothesis> verified;
     KeepVerified(std::move(found), checks, &verified, &rejected, final_pass ? trace : nullptr);
     const size_t n_verified = verified.size();
-    const std::vector<std::string> conflicts = ResolveConflicts(&verified, r.grouping);
-    rejected.insert(rejected.end(), conflicts.begin(), conflicts.end());
-    const std::vector<std::string> orphans = DropOrphanedPlanes(&verified, r.grouping);
-    rejected.insert(rejected.end(), orphans.begin(), orphans.end());
+    const std::vector<std::string> settled = SettleVerifiedPlanes(&verified, r.grouping);
+    rejected.insert(rejected.end(), settled.begin(), settled.end());
     out.stages.push_back({std::string("verification") + pass,
                           StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
                                     n_verified, n_planes, verified.size()),
