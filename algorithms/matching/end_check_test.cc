@@ -104,5 +104,49 @@ TEST(CutUnconfirmedEnds, AnEndNoOtherViewSeesStays) {
   EXPECT_GT(CutUnconfirmedEnds(seen.views, MatchOptions{}, &seen.line), 7.9);
 }
 
+// A ridge along the flight line, from x = -8 to 0 at 10 m. Views 0 and 1
+// fly along it (both at y = -6, the ridge's plane): in them the ridge and
+// whatever lies in line with it beyond the gable are one image edge, at any
+// depth, and both hold a segment on to x = 8. Views 2 and 3, 40 m to either
+// side, hold the ridge alone. Returns the line as matching carried it on.
+struct Ridge {
+  Block block;
+  std::vector<ViewFeatures> views;
+  Line3D line;
+};
+Ridge MakeRidge(double held_across_to_x) {
+  Ridge r;
+  r.block = NadirTestBlock({{-20, -6, 100}, {20, -6, 100}, {0, -46, 100}, {0, 34, 100}});
+  const Eigen::Vector3d a(-8, -6, 10), beyond(8, -6, 10), across(held_across_to_x, -6, 10);
+  const cv::Mat blank(1000, 1000, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5));
+  for (int v = 0; v < 4; ++v)
+    r.views.push_back(PrepareView(
+        r.block, v, blank, {Projected(r.block, v, a, v < 2 ? beyond : across)}, MatchOptions{}));
+  r.line.segment = {a, beyond};
+  r.line.observations = {{0, 0}, {1, 0}, {2, 0}, {3, 0}};
+  return r;
+}
+
+TEST(CutUnconfirmedEnds, TwoViewsAlongTheEpipolarLinesDoNotFixAnEnd) {
+  Ridge r = MakeRidge(0.0);
+  // Views 0 and 1 see the ridge along their epipolar lines; a pair across
+  // the strips sees it steeply.
+  const MatchOptions o;
+  const PairGeometry along = MakePairGeometry(r.views[0], r.views[1]);
+  EXPECT_LT(EpipolarAngle(along.e_i, r.views[0].ideal[0]), 1.0);
+  const PairGeometry across = MakePairGeometry(r.views[0], r.views[2]);
+  EXPECT_GT(EpipolarAngle(across.e_i, r.views[0].ideal[0]), o.min_epipolar_angle);
+
+  // Views 2 and 3 see the part beyond the gable and hold none of it.
+  EXPECT_NEAR(CutUnconfirmedEnds(r.views, o, &r.line), 8.0, 0.05);
+  EXPECT_LT((r.line.segment.a - Eigen::Vector3d(-8, -6, 10)).norm(), 0.05);
+  EXPECT_LT((r.line.segment.b - Eigen::Vector3d(0, -6, 10)).norm(), 0.05);
+}
+
+TEST(CutUnconfirmedEnds, ARidgeTheViewsAcrossHoldEndToEndIsNotTouched) {
+  Ridge r = MakeRidge(8.0);
+  EXPECT_EQ(CutUnconfirmedEnds(r.views, MatchOptions{}, &r.line), 0.0);
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -680,7 +680,7 @@ std::string FormatFunnel(const MatchFunnel& f) {
     out << buf;
   }
   std::snprintf(buf, sizeof buf,
-                "  ends one view alone holds, not confirmed at the line's depth: %d lines cut "
+                "  ends no stereo pair holds, not confirmed at the line's depth: %d lines cut "
                 "back by %.1f m\n",
                 f.ends_cut, f.ends_cut_m);
   out << buf;
