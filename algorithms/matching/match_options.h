@@ -158,8 +158,9 @@ struct MatchOptions {
   int min_views = 2;
 
   // Cut a line's ends that no stereo pair holds (one view alone, or views
-  // along the line's epipolar lines) back to the part a pair holds, unless the other views that see
-  // them confirm them at the line's depth (CutUnconfirmedEnds).
+  // along the line's epipolar lines) back to the part a pair holds, unless
+  // the other views that see them confirm them at the line's depth
+  // (CutUnconfirmedEnds).
   bool check_ends = true;
 
   // ---- junction completion (CompleteAtJunctions): segments no stereo pair

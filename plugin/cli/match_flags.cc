@@ -23,8 +23,7 @@ void MatchFlags::Add(ArgParser& p, MatchOptions* o, EdgeOptions* edges) {
       .Flag("-no_end_check", &no_end_check_,
             "keep a 3D line's ends that no pair of views seeing it across their epipolar lines "
             "holds (one view alone, or views of one strip along it) even when the views that see "
-            "them "
-            "do not confirm them at the line's depth")
+            "them do not confirm them at the line's depth")
       .Flag("-no_junction_ranking", &no_junction_ranking_,
             "rank rival matches of equal support by correlation alone, not first by how many of "
             "their ends meet other 3D lines")
