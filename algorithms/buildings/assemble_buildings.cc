@@ -265,6 +265,54 @@ bool HasRightCorner(const RoofPlaneHypothesis& p, const AssemblyOptions& o) {
                            {o.corner_min_arm_m, o.corner_max_angle_deg, o.adjacency_gap_m}) > 0;
 }
 
+}  // namespace
+
+AssemblyOptions AssemblyOptionsFor(const AssemblyOptions& options, bool with_footprints) {
+  AssemblyOptions o = options;
+  if (with_footprints) {
+    o.min_height_m = options.footprint_min_height_m;
+    o.min_line_length_m = options.footprint_min_line_length_m;
+  }
+  return o;
+}
+
+std::string RoofRefusal(const RoofPlaneHypothesis& p, const GroundModel& ground,
+                        const AssemblyOptions& o) {
+  const Eigen::Vector3d nrm = p.plane.head<3>();
+  if (p.patch.size() < 3 || !(std::abs(SignedArea(p.patch)) > 0) || !nrm.allFinite() ||
+      std::abs(nrm.norm() - 1) > 1e-6)
+    return "degenerate plane or patch";
+  if (p.longest_line_m < o.min_line_length_m && p.longest_line_m < o.min_attached_line_length_m)
+    return StrFormat("longest supporting line %.2f m < %.2f m", p.longest_line_m,
+                     o.min_line_length_m);
+  const double slope = std::acos(std::clamp(nrm.z(), -1.0, 1.0)) / kDeg;
+  if (slope > o.max_roof_slope_deg)
+    return StrFormat("slope %.1f deg > %.1f deg (a wall?)", slope, o.max_roof_slope_deg);
+  const Eigen::Vector2d c = Centroid(p.patch);
+  const double g = ground.HeightAt(c.x(), c.y());
+  if (!std::isfinite(g)) return "no ground height there";
+  const double h = PlaneZ(p.plane, c) - g;
+  if (h < o.min_height_m) return StrFormat("%.2f m above the ground < %.2f m", h, o.min_height_m);
+  return {};
+}
+
+std::vector<std::string> DropRefusedRoofs(std::vector<RoofPlaneHypothesis>* planes,
+                                          const GroundModel& ground, const AssemblyOptions& o) {
+  std::vector<std::string> reasons;
+  std::vector<RoofPlaneHypothesis> kept;
+  for (RoofPlaneHypothesis& p : *planes) {
+    const std::string why = RoofRefusal(p, ground, o);
+    if (why.empty())
+      kept.push_back(std::move(p));
+    else
+      reasons.push_back(p.id + ": " + why);
+  }
+  *planes = std::move(kept);
+  return reasons;
+}
+
+namespace {
+
 // Plausible roof planes of the input, with the reasons for the others.
 std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& o,
@@ -275,37 +323,12 @@ std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
   for (int i = 0; i < static_cast<int>(planes.size()); ++i) {
     const RoofPlaneHypothesis& p = planes[i];
     const std::string name = p.id.empty() ? StrFormat("plane %d", i) : p.id;
-    const Eigen::Vector3d nrm = p.plane.head<3>();
-    if (p.patch.size() < 3 || !(std::abs(SignedArea(p.patch)) > 0) || !nrm.allFinite() ||
-        std::abs(nrm.norm() - 1) > 1e-6) {
-      rejected->push_back(name + ": degenerate plane or patch");
+    const std::string refusal = RoofRefusal(p, ground, o);
+    if (!refusal.empty()) {
+      rejected->push_back(name + ": " + refusal);
       continue;
     }
-    const bool short_lines = p.longest_line_m < o.min_line_length_m;
-    if (short_lines && p.longest_line_m < o.min_attached_line_length_m) {
-      rejected->push_back(name + StrFormat(": longest supporting line %.2f m < %.2f m",
-                                           p.longest_line_m, o.min_line_length_m));
-      continue;
-    }
-    const double slope = std::acos(std::clamp(nrm.z(), -1.0, 1.0)) / kDeg;
-    if (slope > o.max_roof_slope_deg) {
-      rejected->push_back(
-          name + StrFormat(": slope %.1f deg > %.1f deg (a wall?)", slope, o.max_roof_slope_deg));
-      continue;
-    }
-    const Eigen::Vector2d c = Centroid(p.patch);
-    const double g = ground.HeightAt(c.x(), c.y());
-    if (!std::isfinite(g)) {
-      rejected->push_back(name + ": no ground height there");
-      continue;
-    }
-    const double h = PlaneZ(p.plane, c) - g;
-    if (h < o.min_height_m) {
-      rejected->push_back(name +
-                          StrFormat(": %.2f m above the ground < %.2f m", h, o.min_height_m));
-      continue;
-    }
-    if (short_lines) {
+    if (p.longest_line_m < o.min_line_length_m) {
       attached.push_back(i);
       continue;
     }
@@ -1030,11 +1053,7 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
                                  const GroundModel& ground, const AssemblyOptions& options,
                                  const std::vector<Footprint>& footprints) {
-  AssemblyOptions o = options;
-  if (!footprints.empty()) {
-    o.min_height_m = options.footprint_min_height_m;
-    o.min_line_length_m = options.footprint_min_line_length_m;
-  }
+  const AssemblyOptions o = AssemblyOptionsFor(options, !footprints.empty());
   AssemblyResult res;
   res.planes_in = static_cast<int>(input.size());
   res.plane_building.assign(input.size(), "");

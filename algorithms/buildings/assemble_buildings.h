@@ -305,6 +305,27 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& options = {},
                                  const std::vector<Footprint>& footprints = {});
 
+// The options AssembleBuildings applies: with footprints,
+// footprint_min_height_m and footprint_min_line_length_m replace
+// min_height_m and min_line_length_m.
+AssemblyOptions AssemblyOptionsFor(const AssemblyOptions& options, bool with_footprints);
+
+// Why plane p cannot be a roof whatever the other planes are (options as
+// AssemblyOptionsFor gives them): a degenerate plane or patch, steeper than
+// max_roof_slope_deg, no ground height at its patch centre or less than
+// min_height_m above it there, or a longest line too short even for a
+// plane meeting a roof. Empty when none holds. AssembleBuildings refuses
+// such planes first; the sweep drops them before its conflicts, so that a
+// plane the assembly refuses anyway cannot push out one it would keep.
+std::string RoofRefusal(const RoofPlaneHypothesis& p, const GroundModel& ground,
+                        const AssemblyOptions& options);
+
+// Removes from `planes` those with a RoofRefusal, keeping the order of the
+// others; returns "id: refusal" for each.
+std::vector<std::string> DropRefusedRoofs(std::vector<RoofPlaneHypothesis>* planes,
+                                          const GroundModel& ground,
+                                          const AssemblyOptions& options);
+
 // Roof type (roof_type:: code) from the roof faces: flat, monopitch,
 // gabled, hipped, pavilion (pyramid) or combination. Faces under 5 % of
 // the roof area are ignored (slivers of the envelope). A face is a

@@ -185,6 +185,37 @@ TEST(AssembleBuildings, EveryRejectionHasAReason) {
   EXPECT_EQ(r.plane_reason[2], r.rejected[4]);
 }
 
+TEST(AssembleBuildings, PlanesThatCannotBeRoofsAreDroppedWithTheirReasons) {
+  // The gable's faces, a plane 1.85 m above the ground (on `realistic` s1
+  // such a false plane won the sweep's conflict against the 2.1 m high
+  // garage roof under it) and a wall.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in.insert(in.begin() + 1,
+            Hyp(Eigen::Vector4d(0, 0, 1, -1.85), {{20, 0}, {23, 0}, {23, 3}, {20, 3}}));
+  in.push_back(Hyp(SlopedPlane({40, 0, 6}, 85, 0), {{40, 0}, {41, 0}, {41, 10}}));
+  for (size_t i = 0; i < in.size(); ++i) in[i].id = "plane " + std::to_string(i);
+
+  std::vector<RoofPlaneHypothesis> planes = in;
+  const std::vector<std::string> reasons = DropRefusedRoofs(&planes, Flat(0), AssemblyOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "plane 0");
+  EXPECT_EQ(planes[1].id, "plane 2");
+  ASSERT_EQ(reasons.size(), 2u);
+  EXPECT_EQ(reasons[0], "plane 1: 1.85 m above the ground < 2.00 m");
+  EXPECT_TRUE(Mentions(reasons, "plane 3: ", "slope"));
+
+  // The assembly refuses the same planes for the same reasons.
+  const AssemblyResult r = AssembleBuildings(in, Flat(0));
+  EXPECT_TRUE(Mentions(r.rejected, "plane 1: ", "above the ground"));
+  EXPECT_TRUE(Mentions(r.rejected, "plane 3: ", "slope"));
+
+  // With footprints a roof may be 1.5 m high.
+  planes = in;
+  EXPECT_EQ(DropRefusedRoofs(&planes, Flat(0), AssemblyOptionsFor(AssemblyOptions{}, true)).size(),
+            1u);
+  EXPECT_EQ(planes.size(), 3u);
+}
+
 TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
   // A porch roof (3 x 2 m, flat at the eave height, lines of 2.5 m) at the
   // gable's south eave: too short-lined alone, a roof part beside it.

@@ -443,6 +443,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // the trace are the ones reported.
   std::vector<PlaneTrace> traces;
   std::vector<PlaneTrace>* trace = r.planes.empty() ? nullptr : &traces;
+  const AssemblyOptions assembly_options = AssemblyOptionsFor(r.assembly, !footprints.empty());
   auto find_planes = [&](std::vector<SweepLine>& swept, const std::vector<HalfPlane>& sides,
                          bool final_pass, double from, double to) {
     const char* pass = two_passes ? (final_pass ? " (pass 2)" : " (pass 1)") : "";
@@ -480,12 +481,20 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<RoofPlaneHypothesis> verified;
     KeepVerified(std::move(found), checks, &verified, &rejected, final_pass ? trace : nullptr);
     const size_t n_verified = verified.size();
+    // A plane the assembly refuses whatever the others are (too low, too
+    // steep) goes before the conflicts, where it could push out a plane the
+    // assembly would keep.
+    const std::vector<std::string> refused =
+        DropRefusedRoofs(&verified, block.ground, assembly_options);
+    rejected.insert(rejected.end(), refused.begin(), refused.end());
     const std::vector<std::string> settled = SettleVerifiedPlanes(&verified, r.grouping);
     rejected.insert(rejected.end(), settled.begin(), settled.end());
-    out.stages.push_back({std::string("verification") + pass,
-                          StrFormat("%zu of %zu planes confirmed, %zu left after conflicts",
-                                    n_verified, n_planes, verified.size()),
-                          Since(t0)});
+    out.stages.push_back(
+        {std::string("verification") + pass,
+         StrFormat("%zu of %zu planes confirmed, %zu of them no roof (too low, too steep), %zu "
+                   "left after conflicts",
+                   n_verified, n_planes, refused.size(), verified.size()),
+         Since(t0)});
     if (final_pass) out.rejected.insert(out.rejected.end(), rejected.begin(), rejected.end());
     return verified;
   };
