@@ -297,11 +297,16 @@ std::string RoofRefusal(const RoofPlaneHypothesis& p, const GroundModel& ground,
 }
 
 std::vector<std::string> DropRefusedRoofs(std::vector<RoofPlaneHypothesis>* planes,
-                                          const GroundModel& ground, const AssemblyOptions& o) {
+                                          const GroundModel& ground, const AssemblyOptions& o,
+                                          const std::vector<char>* spare_short) {
+  AssemblyOptions any_lines = o;
+  any_lines.min_line_length_m = any_lines.min_attached_line_length_m = 0;
   std::vector<std::string> reasons;
   std::vector<RoofPlaneHypothesis> kept;
-  for (RoofPlaneHypothesis& p : *planes) {
-    const std::string why = RoofRefusal(p, ground, o);
+  for (size_t i = 0; i < planes->size(); ++i) {
+    RoofPlaneHypothesis& p = (*planes)[i];
+    const bool spared = spare_short && i < spare_short->size() && (*spare_short)[i];
+    const std::string why = RoofRefusal(p, ground, spared ? any_lines : o);
     if (why.empty())
       kept.push_back(std::move(p));
     else

@@ -321,10 +321,13 @@ std::string RoofRefusal(const RoofPlaneHypothesis& p, const GroundModel& ground,
                         const AssemblyOptions& options);
 
 // Removes from `planes` those with a RoofRefusal, keeping the order of the
-// others; returns "id: refusal" for each.
+// others; returns "id: refusal" for each. Where (*spare_short)[i] is set,
+// planes[i]'s short lines do not refuse it: a plane that can still merge
+// with a coplanar neighbour brings its lines to that face, and only the
+// merged plane's longest line counts.
 std::vector<std::string> DropRefusedRoofs(std::vector<RoofPlaneHypothesis>* planes,
-                                          const GroundModel& ground,
-                                          const AssemblyOptions& options);
+                                          const GroundModel& ground, const AssemblyOptions& options,
+                                          const std::vector<char>* spare_short = nullptr);
 
 // Roof type (roof_type:: code) from the roof faces: flat, monopitch,
 // gabled, hipped, pavilion (pyramid) or combination. Faces under 5 % of

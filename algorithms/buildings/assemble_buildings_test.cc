@@ -216,6 +216,35 @@ TEST(AssembleBuildings, PlanesThatCannotBeRoofsAreDroppedWithTheirReasons) {
   EXPECT_EQ(planes.size(), 3u);
 }
 
+TEST(AssembleBuildings, ShortLinesRefuseAPlaneUnlessSpared) {
+  // A flat garage roof found as two planes of short lines (1.3 m and
+  // 1.4 m): each alone is refused, but where it may still merge with its
+  // neighbour only its other properties count.
+  std::vector<RoofPlaneHypothesis> in = {
+      Hyp(Eigen::Vector4d(0, 0, 1, -2.5), {{0, 0}, {3, 0}, {3, 6}, {0, 6}}),
+      Hyp(Eigen::Vector4d(0, 0, 1, -2.5), {{3, 0}, {6, 0}, {6, 6}, {3, 6}}),
+      Hyp(Eigen::Vector4d(0, 0, 1, -1.2), {{20, 0}, {23, 0}, {23, 3}, {20, 3}})};
+  in[0].longest_line_m = 1.3;
+  in[1].longest_line_m = 1.4;
+  for (size_t i = 0; i < in.size(); ++i) in[i].id = "plane " + std::to_string(i);
+
+  std::vector<RoofPlaneHypothesis> planes = in;
+  std::vector<std::string> reasons = DropRefusedRoofs(&planes, Flat(0), AssemblyOptions{});
+  EXPECT_TRUE(planes.empty());
+  ASSERT_EQ(reasons.size(), 3u);
+  EXPECT_EQ(reasons[0], "plane 0: longest supporting line 1.30 m < 3.00 m");
+
+  planes = in;
+  const std::vector<char> spare = {1, 0, 1};
+  reasons = DropRefusedRoofs(&planes, Flat(0), AssemblyOptions{}, &spare);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "plane 0");
+  ASSERT_EQ(reasons.size(), 2u);
+  EXPECT_TRUE(Mentions(reasons, "plane 1: ", "longest supporting line"));
+  // Spared from the line rule only: too low is too low.
+  EXPECT_TRUE(Mentions(reasons, "plane 2: ", "above the ground"));
+}
+
 TEST(AssembleBuildings, AShortLinedPlaneIsKeptWhereItJoinsARoof) {
   // A porch roof (3 x 2 m, flat at the eave height, lines of 2.5 m) at the
   // gable's south eave: too short-lined alone, a roof part beside it.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
@@ -9,18 +10,19 @@
 
 namespace roofsweep {
 
-std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis>& planes,
-                                           const NearCoplanarMergeOptions& o) {
+namespace {
+
+// The candidate pairs (i < j) of NearCoplanarMerges: normals within
+// max_angle_deg, patches within max_gap_m, and a step of at most max_step_m
+// where they meet.
+std::vector<std::pair<int, int>> CandidatePairs(const std::vector<RoofPlaneHypothesis>& planes,
+                                                const NearCoplanarMergeOptions& o) {
   const double cos_max = std::cos(o.max_angle_deg * M_PI / 180);
   const int n = static_cast<int>(planes.size());
   std::vector<Eigen::Vector4d> bounds(n);
   for (int i = 0; i < n; ++i) bounds[i] = RingBounds(planes[i].patch);
   const Eigen::Vector4d gap(-o.max_gap_m, -o.max_gap_m, o.max_gap_m, o.max_gap_m);
-  struct Pair {
-    double score;
-    int i, j;
-  };
-  std::vector<Pair> pairs;
+  std::vector<std::pair<int, int>> out;
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       const RoofPlaneHypothesis &a = planes[i], &b = planes[j];
@@ -36,9 +38,30 @@ std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis
             step = std::max(
                 step, std::abs(PlaneZ(p.plane, v.x(), v.y()) - PlaneZ(q.plane, v.x(), v.y())));
       }
-      if (step < 0 || step > o.max_step_m) continue;
-      pairs.push_back({a.score + b.score, i, j});
+      if (step >= 0 && step <= o.max_step_m) out.push_back({i, j});
     }
+  return out;
+}
+
+}  // namespace
+
+std::vector<char> NearCoplanarNeighbours(const std::vector<RoofPlaneHypothesis>& planes,
+                                         const NearCoplanarMergeOptions& o) {
+  std::vector<char> has(planes.size(), 0);
+  for (const auto& [i, j] : CandidatePairs(planes, o)) has[i] = has[j] = 1;
+  return has;
+}
+
+std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis>& planes,
+                                           const NearCoplanarMergeOptions& o) {
+  const int n = static_cast<int>(planes.size());
+  struct Pair {
+    double score;
+    int i, j;
+  };
+  std::vector<Pair> pairs;
+  for (const auto& [i, j] : CandidatePairs(planes, o))
+    pairs.push_back({planes[i].score + planes[j].score, i, j});
   std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
     if (x.score != y.score) return x.score > y.score;
     return x.i != y.i ? x.i < y.i : x.j < y.j;

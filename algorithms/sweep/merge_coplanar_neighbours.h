@@ -64,4 +64,9 @@ bool ConcaveCrease(const RoofPlaneHypothesis& a, const RoofPlaneHypothesis& b);
 std::vector<PlaneMerge> NearCoplanarMerges(const std::vector<RoofPlaneHypothesis>& planes,
                                            const NearCoplanarMergeOptions& options = {});
 
+// For each plane: is it a candidate of NearCoplanarMerges with another of
+// `planes` (whichever pairing the merges would choose)?
+std::vector<char> NearCoplanarNeighbours(const std::vector<RoofPlaneHypothesis>& planes,
+                                         const NearCoplanarMergeOptions& options = {});
+
 }  // namespace roofsweep

@@ -69,6 +69,19 @@ TEST(NearCoplanarMerges, GableFacesAndStepsStayApart) {
   EXPECT_TRUE(NearCoplanarMerges(apart).empty());
 }
 
+TEST(NearCoplanarMerges, NeighboursAreEveryCandidateNotOnlyThePairsChosen) {
+  // a, b and c in a row: the merges pair only b with c, but a is a
+  // candidate of b; d is a step above c, e far away.
+  const std::vector<RoofPlaneHypothesis> planes = {
+      Hyp({0, 0, 1, -6}, {{0, 0}, {4, 0}, {4, 8}, {0, 8}}, "a", 1),
+      Hyp({0, 0, 1, -6.05}, {{4.1, 0}, {8, 0}, {8, 8}, {4.1, 8}}, "b", 5),
+      Hyp({0, 0, 1, -6.1}, {{8.1, 0}, {12, 0}, {12, 8}, {8.1, 8}}, "c", 5),
+      Hyp({0, 0, 1, -7}, {{12.1, 0}, {16, 0}, {16, 8}, {12.1, 8}}, "d"),
+      Hyp({0, 0, 1, -6}, {{30, 0}, {34, 0}, {34, 8}, {30, 8}}, "e")};
+  EXPECT_EQ(NearCoplanarMerges(planes).size(), 1u);
+  EXPECT_EQ(NearCoplanarNeighbours(planes), std::vector<char>({1, 1, 1, 0, 0}));
+}
+
 TEST(NearCoplanarMerges, EachPlaneJoinsOnePairTheStrongestFirst) {
   // Three flat pieces in a row: the stronger pair (b, c) is proposed, a is
   // left alone.

@@ -483,9 +483,17 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     const size_t n_verified = verified.size();
     // A plane the assembly refuses whatever the others are (too low, too
     // steep) goes before the conflicts, where it could push out a plane the
-    // assembly would keep.
-    const std::vector<std::string> refused =
-        DropRefusedRoofs(&verified, block.ground, assembly_options);
+    // assembly would keep. Short lines are not such a property where a
+    // coplanar neighbour can still merge with the plane (a flat roof found
+    // as two planes of short lines): the merge's longest line decides.
+    AssemblyOptions any_lines = assembly_options;
+    any_lines.min_line_length_m = any_lines.min_attached_line_length_m = 0;
+    std::vector<std::string> refused = DropRefusedRoofs(&verified, block.ground, any_lines);
+    const std::vector<char> may_merge =
+        r.merge_coplanar ? NearCoplanarNeighbours(verified, r.merge) : std::vector<char>();
+    const std::vector<std::string> too_short =
+        DropRefusedRoofs(&verified, block.ground, assembly_options, &may_merge);
+    refused.insert(refused.end(), too_short.begin(), too_short.end());
     rejected.insert(rejected.end(), refused.begin(), refused.end());
     const std::vector<std::string> settled = SettleVerifiedPlanes(&verified, r.grouping);
     rejected.insert(rejected.end(), settled.begin(), settled.end());
