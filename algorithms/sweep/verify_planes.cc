@@ -294,7 +294,7 @@ struct SampleGrid {
 
 // The grid of a patch, refined for small patches (see
 // VerifyOptions::min_spacing_m).
-SampleGrid PatchSamples(const Ring2& patch, const VerifyOptions& o) {
+SampleGrid PatchSamples(const Ring2& patch, const VerifyOptions& o, double first_spacing = 0) {
   // A grid finer than 1 cm adds no pixels at any aerial GSD, only time.
   const double min_spacing = std::max(o.min_spacing_m, 0.01);
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -303,7 +303,7 @@ SampleGrid PatchSamples(const Ring2& patch, const VerifyOptions& o) {
     y1 = std::max(y1, q.y());
   SampleGrid g;
   std::vector<std::pair<int, int>> at;
-  for (double spacing = o.spacing_m;; spacing *= 0.5) {
+  for (double spacing = first_spacing > 0 ? first_spacing : o.spacing_m;; spacing *= 0.5) {
     g.points.clear();
     at.clear();
     g.nx = g.ny = 0;
@@ -601,10 +601,19 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // Small faces (dormers, hip ends, porches) hold few grid points at
     // spacing_m: the grid is refined for them, so that the texture, not the
     // grid, decides whether a face can be verified.
-    const SampleGrid grid = PatchSamples(p.patch, o);
+    SampleGrid grid = PatchSamples(p.patch, o);
+    Scores at = ScorePlane(block, grey, grid.points, p.plane, o,
+                           /*texture=*/o.height_from_crossing_lines);
+    // Texture in part of the patch only (a steep face in shade, a flat
+    // roof with a textured rim): a finer grid takes more of it, as for
+    // small patches, before the face is called unverifiable.
+    while (o.refine_for_texture && at.n < o.min_samples &&
+           0.5 * grid.spacing >= o.min_spacing_m * (1 - 1e-9)) {
+      grid = PatchSamples(p.patch, o, 0.5 * grid.spacing);
+      at = ScorePlane(block, grey, grid.points, p.plane, o,
+                      /*texture=*/o.height_from_crossing_lines);
+    }
     const std::vector<Eigen::Vector3d>& samples = grid.points;
-    const Scores at = ScorePlane(block, grey, samples, p.plane, o,
-                                 /*texture=*/o.height_from_crossing_lines);
     v.samples = at.n;
     if (at.n < o.min_samples) {
       v.score = std::numeric_limits<double>::quiet_NaN();

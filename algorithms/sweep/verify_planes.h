@@ -24,6 +24,14 @@ struct VerifyOptions {
   // to reach min_samples at all; on `realistic` seed 1, 17 true faces
   // (dormers, hip ends) were rejected only for that, from true edges.
   double min_spacing_m = 0.125;
+  // Also refine the grid, down to min_spacing_m, while fewer than
+  // min_samples of its points are textured: a patch textured in part only
+  // (a steep face in shade, a lit rim), whose grid points are many. Off by
+  // default; `run` turns it on for the sweep's own planes, not for the
+  // completions' proposals (strips along footprints, faces beyond ridges),
+  // which then passed on thin texture and took a footprint's roof model's
+  // place.
+  bool refine_for_texture = false;
   // Correlation window (2 r + 1)^2 in the reference view, mapped pixel by
   // pixel through the plane into the other views (exact plane-induced
   // mapping, as in the sweep).

@@ -226,6 +226,38 @@ TEST(VerifyPlanes, SmallPatchIsVerifiedOnARefinedGrid) {
   EXPECT_LT(c[0].samples, 32);
 }
 
+TEST(VerifyPlanes, PatchTexturedInPartIsVerifiedOnARefinedGrid) {
+  // The face untextured but for a 1.5 m strip at its west end (a face in
+  // shade with a lit rim): the patch holds grid points enough at 0.25 m,
+  // and too few of them are textured there.
+  Quad lit = Face(true), shaded = Face(false);
+  lit.u = {1.5, 0, 0};
+  shaded.origin.x() = -3.5;
+  shaded.u = {8.5, 0, 0};
+  TestScene scene;
+  scene.quads = {lit, shaded};
+  VerifyOptions o;
+  o.refine_for_texture = true;
+  o.min_samples = 150;  // the patch's 720 grid points are more than 4 x 150
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  NullProgress progress;
+  const auto v = VerifyPlanes(block, images, {Hypothesis(Face(true))}, o, progress);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_TRUE(v[0].accepted) << v[0].reason;
+  EXPECT_GE(v[0].samples, 150);
+  // On the first grid alone it cannot be verified, nor without the option.
+  for (int k = 0; k < 2; ++k) {
+    VerifyOptions first = o;
+    if (k == 0) first.min_spacing_m = o.spacing_m;
+    if (k == 1) first.refine_for_texture = false;
+    const auto c = VerifyPlanes(block, images, {Hypothesis(Face(true))}, first, progress);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_FALSE(c[0].accepted) << k;
+    EXPECT_LT(c[0].samples, 150) << k;
+  }
+}
+
 TEST(VerifyPlanes, UntexturedPatchCannotBeVerified) {
   TestScene scene;
   scene.quads = {Face(false)};

@@ -475,8 +475,10 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     t0 = Clock::now();
     std::vector<RoofPlaneHypothesis> found = ToRoofPlanes(grouped.planes, &swept);
     SubProgress verify_progress(progress, from, to);
+    VerifyOptions sweep_verify = r.verify;
+    sweep_verify.refine_for_texture = true;
     const std::vector<PlaneVerification> checks =
-        VerifyPlanes(block, images, found, r.verify, verify_progress);
+        VerifyPlanes(block, images, found, sweep_verify, verify_progress);
     const size_t n_planes = found.size();
     std::vector<RoofPlaneHypothesis> verified;
     KeepVerified(std::move(found), checks, &verified, &rejected, final_pass ? trace : nullptr);
