@@ -488,9 +488,11 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     // assembly would keep. Short lines are not such a property where a
     // coplanar neighbour can still merge with the plane (a flat roof found
     // as two planes of short lines): the merge's longest line decides.
-    AssemblyOptions any_lines = assembly_options;
-    any_lines.min_line_length_m = any_lines.min_attached_line_length_m = 0;
-    std::vector<std::string> refused = DropRefusedRoofs(&verified, block.ground, any_lines);
+    // Every plane spared from the line rule first: the merge partners are
+    // looked for among the planes that are no roof for no other reason.
+    const std::vector<char> all(verified.size(), 1);
+    std::vector<std::string> refused =
+        DropRefusedRoofs(&verified, block.ground, assembly_options, &all);
     const std::vector<char> may_merge =
         r.merge_coplanar ? NearCoplanarNeighbours(verified, r.merge) : std::vector<char>();
     const std::vector<std::string> too_short =
