@@ -1,5 +1,6 @@
 #include "algorithms/buildings/mirror_completion.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,58 @@ Eigen::Vector2d Reflect(const Eigen::Vector2d& p, const Eigen::Vector2d& r,
                         const Eigen::Vector2d& t) {
   const Eigen::Vector2d d = p - r;
   return r + 2 * d.dot(t) * t - d;
+}
+
+// Plane z = g . x + h: its uphill gradient g and height h at the origin.
+Eigen::Vector3d Gradient(const Eigen::Vector4d& plane) {
+  return Eigen::Vector3d(-plane[0], -plane[1], -plane[3]) / plane[2];
+}
+
+// The level line where p meets a plane falling the other way beyond it
+// (see MirrorCompletionOptions::virtual_ridges), as a segment across p's
+// patch; of several such planes, the one whose line lies highest on p.
+bool VirtualRidge(const RoofPlaneHypothesis& p, const std::vector<RoofPlaneHypothesis>& planes,
+                  const MirrorCompletionOptions& o, std::array<Eigen::Vector2d, 2>* out) {
+  const Eigen::Vector3d gp = Gradient(p.plane);
+  const Eigen::Vector2d up = gp.head<2>().normalized();
+  const Eigen::Vector2d t(-up.y(), up.x());
+  const double area = std::abs(SignedArea(p.patch));
+  if (!(area > 1e-9)) return false;
+  double best_at = -std::numeric_limits<double>::infinity();
+  for (const RoofPlaneHypothesis& q : planes) {
+    if (&q == &p || q.patch.size() < 3 || q.plane[2] <= 0 || !(SignedArea(q.patch) > 1e-9))
+      continue;
+    const double slope = std::acos(std::min(1.0, q.plane[2]));
+    if (slope < o.min_slope_deg * kDeg || slope > o.max_slope_deg * kDeg) continue;
+    const Eigen::Vector3d gq = Gradient(q.plane);
+    if (gq.head<2>().normalized().dot(up) > -std::cos(o.virtual_ridge_max_turn_deg * kDeg))
+      continue;
+    // They cross where w . x = hq - hp, w = gp - gq (pointing up p's slope).
+    const Eigen::Vector2d w = gp.head<2>() - gq.head<2>();
+    const double wn = w.norm();
+    if (!(wn > 1e-9) || w.dot(up) < std::cos(o.ridge_max_angle_deg * kDeg) * wn) continue;
+    const Eigen::Vector2d m = w / wn;
+    const double s = (gq.z() - gp.z()) / wn;
+    // q beyond the line, near p.
+    if (FirstMoment(q.patch).dot(m) / SignedArea(q.patch) <= s ||
+        ConvexDistance(p.patch, q.patch) > o.virtual_ridge_gap_m)
+      continue;
+    // Along up from the patch's centroid to the line.
+    const Eigen::Vector2d c = FirstMoment(p.patch) / SignedArea(p.patch);
+    const Eigen::Vector2d r = c + up * (s - c.dot(m)) / up.dot(m);
+    const double at = r.dot(up);
+    if (at <= best_at) continue;
+    const Ring2 below = ClipHalfPlane(p.patch, up.x(), up.y(), -at);
+    if (below.size() < 3 || std::abs(SignedArea(below)) < o.ridge_min_below * area) continue;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Eigen::Vector2d& v : below) {
+      lo = std::min(lo, (v - r).dot(t));
+      hi = std::max(hi, (v - r).dot(t));
+    }
+    *out = {r + lo * t, r + hi * t};
+    best_at = at;
+  }
+  return std::isfinite(best_at);
 }
 
 }  // namespace
@@ -48,6 +101,11 @@ std::vector<RoofPlaneHypothesis> MirroredFaces(const std::vector<RoofPlaneHypoth
       if (below.size() < 3 || std::abs(SignedArea(below)) < o.ridge_min_below * area) continue;
       ridge = &l;
       ridge_at = at;
+    }
+    std::array<Eigen::Vector2d, 2> virtual_ridge;
+    if (!ridge && o.virtual_ridges && VirtualRidge(p, planes, o, &virtual_ridge)) {
+      ridge = &virtual_ridge;
+      ridge_at = 0.5 * (virtual_ridge[0] + virtual_ridge[1]).dot(up);
     }
     if (!ridge) continue;
     // The ridge level: the plane's height at the line's middle; the mirror

@@ -19,6 +19,16 @@ struct MirrorCompletionOptions {
   double ridge_min_length_m = 2.0;
   double ridge_max_angle_deg = 10.0;
   double ridge_min_below = 0.7;
+  // Without such a line, the ridge is where the face meets a plane that
+  // falls the other way (uphill directions within virtual_ridge_max_turn_deg
+  // of opposite, at its slope range, its patch within virtual_ridge_gap_m
+  // and beyond the line): the intersection, when it is level in the face
+  // as above and has ridge_min_below of the patch below it. The matched
+  // piece of a ridge is often shorter than 2 m where the two faces are of
+  // one colour, while the other face's plane is found along part of it.
+  bool virtual_ridges = true;
+  double virtual_ridge_max_turn_deg = 20.0;
+  double virtual_ridge_gap_m = 1.0;
   // No proposal where a plane within same_angle_deg covers same_cover of
   // the mirrored patch already, nor for mirrored patches under min_patch_m2.
   // The verification decides on a proposal, so the floor only spares it
@@ -36,7 +46,8 @@ struct MirrorCompletionOptions {
 // Completion by symmetry: most pitched roofs are symmetric about the ridge,
 // and the sweep often finds one face of a gable or hip roof and not the
 // other (too few lines on it, its half-planes weak). Each face with a
-// ridge line at its top proposes its mirror image about the ridge's
+// ridge line at its top (or, without one, a plane falling the other way
+// that meets it there: virtual_ridges) proposes its mirror image about the ridge's
 // vertical plane: the same slope falling the other way from the same
 // ridge, over its own patch reflected across the ridge. The ridge is the
 // proposal's supporting line. A proposal is a hypothesis only (derived):

@@ -101,5 +101,44 @@ TEST(MirroredFaces, AShedsFaceProposesItsOtherFace) {
   EXPECT_EQ(MirroredFaces({tiny}, short_ridge).size(), 1u);
 }
 
+// The ridge's matched piece is too short (the faces are of one colour),
+// and the north face was found along 3 m of the ridge only: where the two
+// planes meet is the ridge, and the whole north face is proposed.
+TEST(MirroredFaces, TheRidgeIsWhereTheFaceMeetsAPlaneFallingTheOtherWay) {
+  RoofPlaneHypothesis south = SouthFace();
+  south.lines_xy[1] = {Eigen::Vector2d(4, 4), Eigen::Vector2d(5.5, 4)};  // 1.5 m
+  RoofPlaneHypothesis north;
+  north.id = "north part";
+  const Eigen::Vector3d n = Eigen::Vector3d(0, 2, 4).normalized();
+  north.plane << n, -n.dot(Eigen::Vector3d(0, 4, 8));
+  north.patch = {{7, 4}, {10, 4}, {10, 8}, {7, 8}};
+  north.lines = 2;
+  const std::vector<RoofPlaneHypothesis> out = MirroredFaces({south, north});
+  ASSERT_EQ(out.size(), 1u);
+  const RoofPlaneHypothesis& q = out[0];
+  EXPECT_EQ(q.id, "south mirrored");
+  EXPECT_NEAR(PlaneZ(q, 3, 4), 8.0, 1e-9);
+  EXPECT_NEAR(PlaneZ(q, 7, 8), 6.0, 1e-9);
+  EXPECT_NEAR(std::abs(SignedArea(q.patch)), 40.0, 1e-9);
+  ASSERT_EQ(q.lines_xy.size(), 1u);
+  EXPECT_NEAR(q.lines_xy[0][0].y(), 4.0, 1e-9);
+  EXPECT_NEAR((q.lines_xy[0][1] - q.lines_xy[0][0]).norm(), 10.0, 1e-9);
+
+  MirrorCompletionOptions off;
+  off.virtual_ridges = false;
+  EXPECT_TRUE(MirroredFaces({south, north}, off).empty());
+
+  // A plane rising the same way beyond is no ridge (a higher shed roof).
+  RoofPlaneHypothesis same_way = north;
+  const Eigen::Vector3d m = Eigen::Vector3d(0, -2, 4).normalized();
+  same_way.plane << m, -m.dot(Eigen::Vector3d(0, 4, 9));
+  EXPECT_TRUE(MirroredFaces({south, same_way}).empty());
+
+  // Nor one 2 m away across a gap (another building).
+  RoofPlaneHypothesis apart = north;
+  for (auto& v : apart.patch) v.y() += 2;
+  EXPECT_TRUE(MirroredFaces({south, apart}).empty());
+}
+
 }  // namespace
 }  // namespace roofsweep
