@@ -114,6 +114,7 @@ SimulationResult Simulate(const SimulationOptions& o, Progress& progress, const 
                     0.02 + 0.98 * (i + 1) / r.views.size());
     r.images.push_back(renderer.Render(r.views[i], static_cast<int>(i), o.seed, &sub));
   }
+  r.roof_visibility = RoofVisibility(renderer, r.scene, r.views);
   return r;
 }
 

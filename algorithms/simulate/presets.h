@@ -8,6 +8,7 @@
 #include "algorithms/core/progress.h"
 #include "algorithms/simulate/camera_layout.h"
 #include "algorithms/simulate/renderer.h"
+#include "algorithms/simulate/roof_visibility.h"
 #include "algorithms/simulate/scene.h"
 
 namespace roofsweep {
@@ -59,6 +60,8 @@ struct SimulationResult {
   SceneTruth truth;
   std::vector<SimulatedView> views;
   std::vector<cv::Mat> images;  // CV_8UC3 RGB, one per view
+  // What each view sees of each true roof polygon (RoofVisibility).
+  std::vector<RoofPolygonVisibility> roof_visibility;
 };
 
 // Generates the scene (or uses `city` when given), lays out the cameras over

@@ -16,7 +16,9 @@ int Eval(const std::vector<std::string>& args, Context&) {
               "plane completeness/correctness/quality (each false or missed plane told by what "
               "covers it: nothing, a plane at another slope, or only several planes together), "
               "normal-angle, vertex and height errors, buildings, roof types, and 3D lines when "
-              "given.");
+              "given. Against a folder of roofsweep simulate, also the completeness over the roof "
+              "planes the images show (two views each seeing half of the plane): a shed under a "
+              "tree is in the reference, but no method finds it.");
   p.Positional("RESULT", &r.result, "reconstructed model (CityGML, CityJSON, GPKG)")
       .Positional("GROUNDTRUTH", &r.truth,
                   "ground-truth model, or a folder written by roofsweep simulate")

@@ -9,6 +9,7 @@
 #include "algorithms/core/error.h"
 #include "algorithms/eval/eval_report.h"
 #include "algorithms/eval/overlay.h"
+#include "algorithms/eval/seen_planes.h"
 #include "algorithms/geometry/slope.h"
 #include "algorithms/simulate/scene_truth.h"
 #include "io/citymodel/citymodel_io.h"
@@ -36,7 +37,7 @@ void CheckSameCrs(const std::string& a, const std::string& what_a, const std::st
 }  // namespace
 
 EvalReport RunEval(const EvalRequest& r) {
-  std::string truth_path = r.truth, edges_path;
+  std::string truth_path = r.truth, edges_path, visibility_path;
   EvalOptions options = r.options;
   std::optional<BlockManifest> manifest;
   if (fs::is_directory(r.truth)) {
@@ -46,6 +47,8 @@ EvalReport RunEval(const EvalRequest& r) {
     }
     const fs::path edges = fs::path(r.truth) / "groundtruth_edges.json";
     if (fs::exists(edges)) edges_path = edges.string();
+    const fs::path visibility = fs::path(r.truth) / "groundtruth_visibility.json";
+    if (fs::exists(visibility)) visibility_path = visibility.string();
     // Lines on the simulated terrain (its height or its DTM) lie on a true
     // surface.
     const fs::path block_json = fs::path(r.truth) / "block.json";
@@ -126,6 +129,43 @@ EvalReport RunEval(const EvalRequest& r) {
                            extra.empty() ? nullptr : &extra, clutter.empty() ? nullptr : &clutter);
   report.table = FormatTable(report.result);
   report.json = ToJson(report.result);
+  std::optional<SeenPlaneScores> seen;
+  if (!visibility_path.empty()) {
+    std::vector<SeenPolygon> polygons;
+    std::ifstream f(visibility_path);
+    const auto j = nlohmann::json::parse(f, nullptr, false);
+    if (!j.is_object() || !j.contains("roof_polygons") || !j["roof_polygons"].is_array())
+      throw Error(visibility_path + ": not a roof visibility file of roofsweep simulate");
+    for (const auto& p : j["roof_polygons"]) {
+      SeenPolygon q;
+      if (!p.contains("centroid") || !p["centroid"].is_array() || p["centroid"].size() != 3 ||
+          !p.contains("seen") || !p["seen"].is_array())
+        throw Error(visibility_path + ": a roof polygon without centroid or seen");
+      for (int k = 0; k < 3; ++k) q.centroid[k] = p["centroid"][k].get<double>() - origin[k];
+      for (const auto& v : p["seen"]) q.seen.push_back(v.get<float>());
+      polygons.push_back(std::move(q));
+    }
+    seen = ScoreSeenPlanes(truth, report.result, polygons);
+    const SeenPlaneOptions so;
+    char buf[256];
+    std::snprintf(
+        buf, sizeof buf,
+        "\nRoof planes the images show (%d+ views see half of each)\n"
+        "  completeness                       %5.1f %%  %d of %d reference\n"
+        "  seen by fewer views                   %4d  planes, %d of them matched%s\n",
+        so.min_views, 100 * seen->Completeness(), seen->seen_true_positive, seen->seen,
+        seen->unseen, seen->unseen_true_positive,
+        seen->unknown ? (", " + std::to_string(seen->unknown) + " not in the file").c_str() : "");
+    report.table += buf;
+    report.json["roof_planes_seen"] = {{"min_views", so.min_views},
+                                       {"min_fraction", so.min_fraction},
+                                       {"reference", seen->seen},
+                                       {"true_positive", seen->seen_true_positive},
+                                       {"completeness", seen->Completeness()},
+                                       {"unseen", seen->unseen},
+                                       {"unseen_true_positive", seen->unseen_true_positive},
+                                       {"unknown", seen->unknown}};
+  }
   if (!blocks.buildings.empty()) {
     const Lod1Scores lod1 = EvaluateLod1(blocks, truth, report.result, options);
     report.table += FormatLod1Table(lod1);
@@ -158,6 +198,7 @@ EvalReport RunEval(const EvalRequest& r) {
                       {"slope_deg", slope},
                       {"kind", UnmatchedKindKey(p.unmatched)},
                       {"stage", losses.stage[i]}});
+      if (seen && seen->views[i] >= 0) list.back()["views_seen"] = seen->views[i];
     }
   }
   // Per false result plane, so that a person can find each on the overlay

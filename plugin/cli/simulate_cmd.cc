@@ -15,11 +15,13 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
   std::string origin, aoi;
   std::string presets;
   for (const auto& p : sim::SimulationPresetNames()) presets += (presets.empty() ? "" : ", ") + p;
-  ArgParser p("simulate",
-              "Renders an oriented aerial block of LoD2 buildings with exactly known cameras and "
-              "writes images, orientation, a block manifest and the ground truth: the LoD2 model "
-              "(groundtruth.gml), its 3D edges (groundtruth_edges.json) and the building "
-              "footprints (footprints.gpkg).");
+  ArgParser p(
+      "simulate",
+      "Renders an oriented aerial block of LoD2 buildings with exactly known cameras and "
+      "writes images, orientation, a block manifest and the ground truth: the LoD2 model "
+      "(groundtruth.gml), its 3D edges (groundtruth_edges.json), what each view sees of each "
+      "roof polygon (groundtruth_visibility.json, for eval's completeness over the roofs "
+      "the images show) and the building footprints (footprints.gpkg).");
   p.Option("-preset|--preset", &r.preset, "NAME", "one of " + presets + " (default realistic)")
       .Option("-seed|--seed", &seed, "N", "random seed; the same seed gives the same block (1)")
       .Option("-citygml|--citygml", &r.citygml, "FILE",

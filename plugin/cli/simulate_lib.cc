@@ -296,6 +296,22 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   }
   WriteSegmentsJson(edges, dir + "/groundtruth_edges.json", false);
 
+  // What each view sees of each true roof polygon, for `eval`'s
+  // completeness over the roofs the images show (ScoreSeenPlanes).
+  nlohmann::json vis = {{"crs", crs}, {"views", nlohmann::json::array()}};
+  for (const sim::SimulatedView& v : sim.views) vis["views"].push_back(v.name);
+  nlohmann::json& polys = vis["roof_polygons"];
+  polys = nlohmann::json::array();
+  for (const sim::RoofPolygonVisibility& p : sim.roof_visibility) {
+    const Eigen::Vector3d c = frame.ToCrs(p.centroid);
+    nlohmann::json seen = nlohmann::json::array();
+    for (float f : p.seen) seen.push_back(std::round(static_cast<double>(f) * 1000) / 1000);
+    polys.push_back({{"building", truth.buildings[p.building].id},
+                     {"centroid", {c.x(), c.y(), c.z()}},
+                     {"seen", seen}});
+  }
+  WriteText(dir + "/groundtruth_visibility.json", vis.dump(1) + "\n");
+
   SimulateSummary s;
   s.views = static_cast<int>(sim.views.size());
   s.buildings = static_cast<int>(truth.buildings.size());

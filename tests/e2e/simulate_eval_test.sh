@@ -11,7 +11,7 @@ small_block() {
 
 test_simulate_writes_a_readable_block() {
   small_block || { fail simulate "exit $?"; return; }
-  for f in block.json groundtruth.gml groundtruth_edges.json footprints.gpkg simulation.json orientation/opk.txt orientation/camera.yaml; do
+  for f in block.json groundtruth.gml groundtruth_edges.json groundtruth_visibility.json footprints.gpkg simulation.json orientation/opk.txt orientation/camera.yaml; do
     [[ -s "$SIM/$f" ]] || { fail "simulate_writes_$f" "missing"; return; }
   done
   pass simulate_writes_all_files
@@ -48,7 +48,8 @@ test_simulate_is_deterministic() {
   small_block || return
   "$RS" simulate -preset easy -seed 5 -size 512 -gsd 0.15 -strips 1 -views 2 -buildings 4 -o "$WORK/again" -q
   if diff -r -q "$SIM/images" "$WORK/again/images" >/dev/null && cmp -s "$SIM/groundtruth.gml" "$WORK/again/groundtruth.gml" &&
-    cmp -s "$SIM/block.json" "$WORK/again/block.json"; then
+    cmp -s "$SIM/block.json" "$WORK/again/block.json" &&
+    cmp -s "$SIM/groundtruth_visibility.json" "$WORK/again/groundtruth_visibility.json"; then
     pass same_seed_same_bytes
   else
     fail same_seed_same_bytes "images or ground truth differ"
@@ -76,7 +77,11 @@ rp=j['roof_planes']; g=j['geometry']; b=j['buildings']; l=j['lines3d']
 assert rp['completeness']==1 and rp['correctness']==1 and rp['quality']==1, rp
 assert g['angle_median_deg'] < 1e-6 and g['vertex_rms_m'] < 1e-6 and g['rmsz_m'] < 1e-6, g
 assert b['completeness']==1 and b['correctness']==1, b
-assert l['precision']==1 and l['roof_edge_completeness']==1, l" "$WORK/stdout.txt" \
+assert l['precision']==1 and l['roof_edge_completeness']==1, l
+# Every reference plane found in the visibility file, seen or not.
+s=j['roof_planes_seen']
+assert s['unknown']==0 and s['reference']+s['unseen']==rp['n_reference'] and s['reference']>0, s
+assert s['completeness']==1 and s['unseen_true_positive']==s['unseen'], s" "$WORK/stdout.txt" \
     && pass eval_self_perfect || fail eval_self_perfect "$(head -c 600 "$WORK/stdout.txt")"
 }
 
