@@ -701,7 +701,11 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
         ((o.height_from_crossing_lines &&
           v.offset_m * ParallaxAcrossTexture(parallax, at.texture) < o.ncc_radius) ||
          (o.height_from_outline && v.below_difference > 0 && v.above_difference > 0 &&
-          DrawnByItsLines(p, o)));
+          DrawnByItsLines(p, o)) ||
+         (o.flat_from_lines > 0 && static_cast<int>(p.lines_xy.size()) >= o.flat_from_lines &&
+          p.plane[2] >= std::cos(o.flat_max_slope_deg * M_PI / 180) &&
+          v.below_difference > -o.flat_tie_z * v.below_se &&
+          v.above_difference > -o.flat_tie_z * v.above_se));
     char buf[200];
     if (v.score < o.min_score) {
       std::snprintf(buf, sizeof buf, "photometric score %.2f < %.2f over %d samples", v.score,

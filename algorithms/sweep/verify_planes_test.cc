@@ -341,7 +341,8 @@ TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
   drawn.lines_xy = high.lines_xy = {eave, west, east};
   one_side.lines_xy = {west};
   VerifyOptions o;
-  o.min_margin = 1.0;  // no plane confirms its height
+  o.min_margin = 1.0;     // no plane confirms its height
+  o.flat_from_lines = 0;  // the rule of the next test
   NullProgress progress;
   const auto v = VerifyPlanes(block, images, {drawn, one_side, high}, o, progress);
   ASSERT_EQ(v.size(), 3u);
@@ -363,6 +364,60 @@ TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
   // Without the option the drawn outline does not help.
   o.height_from_outline = false;
   const auto w = VerifyPlanes(block, images, {drawn}, o, progress);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_FALSE(w[0].accepted);
+}
+
+// The same flat roof, its outline rule off: three lines on it (one across
+// the baselines) carry it where neither moved plane scores significantly
+// better, whatever their length; one line does not, nor a plane 1.5 m too
+// high, nor a sloped face.
+TEST(VerifyPlanes, FlatPlaneOfThreeLinesIsTakenFromThemOnATie) {
+  Quad roof;
+  roof.origin = {-3, 0, 4.3};
+  roof.u = {6, 0, 0};
+  roof.v = {0, 5, 0};
+  roof.seed = 7;
+  Quad face = Face(true);
+  face.origin.x() += 20;
+  TestScene scene;
+  scene.quads = {roof, face};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  auto flat = [](double z) {
+    RoofPlaneHypothesis h;
+    h.plane = Eigen::Vector4d(0, 0, 1, -z);
+    h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
+    return h;
+  };
+  const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
+                                       west = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
+                                       east = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
+  RoofPlaneHypothesis lined = flat(4.3), one_line = flat(4.3), high = flat(5.8);
+  lined.lines_xy = high.lines_xy = {eave, west, east};
+  one_line.lines_xy = {west};
+  RoofPlaneHypothesis sloped = Hypothesis(face);
+  for (auto& v : sloped.patch) v.x() += 20;
+  sloped.lines_xy = {{Eigen::Vector2d(15, 6), Eigen::Vector2d(25, 6)},
+                     {Eigen::Vector2d(15, 0), Eigen::Vector2d(15, 6)},
+                     {Eigen::Vector2d(25, 0), Eigen::Vector2d(25, 6)}};
+  VerifyOptions o;
+  o.min_margin = 1.0;  // no plane confirms its height
+  o.height_from_outline = false;
+  o.height_from_crossing_lines = false;
+  o.outline_max_line_m = 1.0;  // lines of any length
+  NullProgress progress;
+  const auto v = VerifyPlanes(block, images, {lined, one_line, high, sloped}, o, progress);
+  ASSERT_EQ(v.size(), 4u);
+  EXPECT_TRUE(v[0].accepted) << v[0].reason;
+  EXPECT_FALSE(v[0].height_confirmed);
+  EXPECT_FALSE(v[1].accepted);
+  EXPECT_EQ(v[1].reason.rfind("height not confirmed", 0), 0u) << v[1].reason;
+  EXPECT_FALSE(v[2].accepted) << "below " << v[2].below_difference;
+  EXPECT_FALSE(v[3].accepted);
+  EXPECT_EQ(v[3].reason.rfind("height not confirmed", 0), 0u) << v[3].reason;
+  o.flat_from_lines = 0;
+  const auto w = VerifyPlanes(block, images, {lined}, o, progress);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_FALSE(w[0].accepted);
 }
