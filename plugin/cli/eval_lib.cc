@@ -1,5 +1,6 @@
 #include "plugin/cli/eval_lib.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -138,9 +139,14 @@ EvalReport RunEval(const EvalRequest& r) {
       throw Error(visibility_path + ": not a roof visibility file of roofsweep simulate");
     for (const auto& p : j["roof_polygons"]) {
       SeenPolygon q;
-      if (!p.contains("centroid") || !p["centroid"].is_array() || p["centroid"].size() != 3 ||
-          !p.contains("seen") || !p["seen"].is_array())
-        throw Error(visibility_path + ": a roof polygon without centroid or seen");
+      auto numbers = [](const nlohmann::json& a) {
+        return a.is_array() && std::all_of(a.begin(), a.end(),
+                                           [](const nlohmann::json& v) { return v.is_number(); });
+      };
+      if (!p.is_object() || !p.contains("centroid") || !numbers(p["centroid"]) ||
+          p["centroid"].size() != 3 || !p.contains("seen") || !numbers(p["seen"]))
+        throw Error(visibility_path + ": roof polygon " + std::to_string(polygons.size()) +
+                    " has no centroid of three numbers or no list of numbers 'seen'");
       for (int k = 0; k < 3; ++k) q.centroid[k] = p["centroid"][k].get<double>() - origin[k];
       for (const auto& v : p["seen"]) q.seen.push_back(v.get<float>());
       polygons.push_back(std::move(q));

@@ -87,6 +87,15 @@ assert s['completeness']==1 and s['unseen_true_positive']==s['unseen'], s" "$WOR
 
 # -vertices: one point per vertex of the matched planes, in the models' CRS,
 # as many as the JSON counts; against itself every one lies on the outline.
+# A damaged visibility file is refused with its name, not half read.
+test_eval_refuses_a_damaged_visibility_file() {
+  small_block || return
+  rm -rf "$WORK/simvis" && cp -r "$SIM" "$WORK/simvis"
+  echo '{"roof_polygons": [{"centroid": ["a", 2, 3], "seen": [1]}]}' >"$WORK/simvis/groundtruth_visibility.json"
+  expect_fail eval_bad_visibility "" "groundtruth_visibility.json: roof polygon 0 " -- \
+    eval "$SIM/groundtruth.gml" "$WORK/simvis"
+}
+
 test_eval_writes_vertices() {
   small_block || return
   expect_ok eval_vertices eval "$SIM/groundtruth.gml" "$SIM" --json -vertices "$WORK/v.gpkg" || return
