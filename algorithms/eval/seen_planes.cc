@@ -46,18 +46,14 @@ SeenPlaneScores ScoreSeenPlanes(const CityModel& truth, const EvalResult& eval,
     double total = 0;
     bool known = true;
     for (const auto& [si, pi] : rp.polygons) {
-      const std::vector<Eigen::Vector3d>& ring = b.surfaces[si].polygons[pi].exterior;
-      if (ring.empty()) continue;
+      const Polygon3& polygon = b.surfaces[si].polygons[pi];
+      if (polygon.exterior.empty()) continue;
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      double area = 0;
-      for (size_t k = 0; k < ring.size(); ++k) {
-        c += ring[k];
-        const Eigen::Vector3d& a = ring[k];
-        const Eigen::Vector3d& n = ring[(k + 1) % ring.size()];
-        area += a.x() * n.y() - a.y() * n.x();
-      }
-      c /= static_cast<double>(ring.size());
-      area = 0.5 * std::abs(area);
+      for (const Eigen::Vector3d& v : polygon.exterior) c += v;
+      c /= static_cast<double>(polygon.exterior.size());
+      // The polygons of one plane share its slope: their areas weigh them
+      // as their plan areas would.
+      const double area = std::abs(polygon.Area());
       const SeenPolygon* p = find(c);
       if (!p) {
         known = false;

@@ -4,6 +4,7 @@
 #include <map>
 #include <tuple>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/geometry/view.h"
 
 namespace roofsweep {
@@ -56,22 +57,14 @@ std::vector<RoofPolygonVisibility> RoofVisibility(const Renderer& renderer, cons
           scene.city.buildings[r.building].surfaces[r.surface].polygons[r.polygon].exterior;
       // Projected area by the shoelace formula over the projected ring: a
       // roof polygon lies in front of every nadir view.
-      double area = 0;
-      bool ok = true;
-      std::vector<Eigen::Vector2d> q;
+      Ring2 q;
       for (const Eigen::Vector3d& X : ring) {
         const auto p = Project(views[v].camera, views[v].pose, X);
-        if (!p) ok = false;
-        if (!ok) break;
+        if (!p) break;
         q.push_back(*p);
       }
-      if (!ok || q.size() < 3) continue;
-      for (size_t k = 0; k < q.size(); ++k) {
-        const Eigen::Vector2d& a = q[k];
-        const Eigen::Vector2d& b = q[(k + 1) % q.size()];
-        area += a.x() * b.y() - a.y() * b.x();
-      }
-      area = 0.5 * std::abs(area);
+      if (q.size() < 3 || q.size() < ring.size()) continue;
+      const double area = std::abs(SignedArea(q));
       if (area > 0) out[i].seen[v] = static_cast<float>(std::min(1.0, visible[i] / area));
     }
   }

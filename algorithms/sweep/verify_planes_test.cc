@@ -315,31 +315,40 @@ TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
   EXPECT_FALSE(w[1].accepted) << w[1].score;
 }
 
-// A shed's flat roof whose height the images do not tell (here: a margin
-// no plane can reach) is accepted on its lines when three of its sides are
-// drawn, and not on one side, nor at a height the images like less.
-TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
+// A shed's flat roof, 6 x 5 m at z = 4.3, and the lines of three of its
+// sides: eave (along x), west and east.
+Quad ShedRoof() {
   Quad roof;
   roof.origin = {-3, 0, 4.3};
   roof.u = {6, 0, 0};
   roof.v = {0, 5, 0};
   roof.seed = 7;
+  return roof;
+}
+const std::array<Eigen::Vector2d, 2> kShedEave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
+                                     kShedWest = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
+                                     kShedEast = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
+
+// A flat plane at height z over the shed roof's patch.
+RoofPlaneHypothesis FlatOverShed(double z) {
+  RoofPlaneHypothesis h;
+  h.plane = Eigen::Vector4d(0, 0, 1, -z);
+  h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
+  return h;
+}
+
+// A shed's flat roof whose height the images do not tell (here: a margin
+// no plane can reach) is accepted on its lines when three of its sides are
+// drawn, and not on one side, nor at a height the images like less.
+TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
   TestScene scene;
-  scene.quads = {roof};
+  scene.quads = {ShedRoof()};
   const Block block = sweep_test::FourViewBlock();
   const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
-  auto flat = [](double z) {
-    RoofPlaneHypothesis h;
-    h.plane = Eigen::Vector4d(0, 0, 1, -z);
-    h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
-    return h;
-  };
-  const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
-                                       west = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
-                                       east = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
-  RoofPlaneHypothesis drawn = flat(4.3), one_side = flat(4.3), high = flat(5.8);
-  drawn.lines_xy = high.lines_xy = {eave, west, east};
-  one_side.lines_xy = {west};
+  RoofPlaneHypothesis drawn = FlatOverShed(4.3), one_side = FlatOverShed(4.3),
+                      high = FlatOverShed(5.8);
+  drawn.lines_xy = high.lines_xy = {kShedEave, kShedWest, kShedEast};
+  one_side.lines_xy = {kShedWest};
   VerifyOptions o;
   o.min_margin = 1.0;     // no plane confirms its height
   o.flat_from_lines = 0;  // the rule of the next test
@@ -373,29 +382,16 @@ TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
 // better, whatever their length; one line does not, nor a plane 1.5 m too
 // high, nor a sloped face.
 TEST(VerifyPlanes, FlatPlaneOfThreeLinesIsTakenFromThemOnATie) {
-  Quad roof;
-  roof.origin = {-3, 0, 4.3};
-  roof.u = {6, 0, 0};
-  roof.v = {0, 5, 0};
-  roof.seed = 7;
   Quad face = Face(true);
   face.origin.x() += 20;
   TestScene scene;
-  scene.quads = {roof, face};
+  scene.quads = {ShedRoof(), face};
   const Block block = sweep_test::FourViewBlock();
   const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
-  auto flat = [](double z) {
-    RoofPlaneHypothesis h;
-    h.plane = Eigen::Vector4d(0, 0, 1, -z);
-    h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
-    return h;
-  };
-  const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
-                                       west = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
-                                       east = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
-  RoofPlaneHypothesis lined = flat(4.3), one_line = flat(4.3), high = flat(5.8);
-  lined.lines_xy = high.lines_xy = {eave, west, east};
-  one_line.lines_xy = {west};
+  RoofPlaneHypothesis lined = FlatOverShed(4.3), one_line = FlatOverShed(4.3),
+                      high = FlatOverShed(5.8);
+  lined.lines_xy = high.lines_xy = {kShedEave, kShedWest, kShedEast};
+  one_line.lines_xy = {kShedWest};
   RoofPlaneHypothesis sloped = Hypothesis(face);
   for (auto& v : sloped.patch) v.x() += 20;
   sloped.lines_xy = {{Eigen::Vector2d(15, 6), Eigen::Vector2d(25, 6)},
