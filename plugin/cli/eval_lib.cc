@@ -18,6 +18,7 @@
 #include "io/citymodel/output_file.h"
 #include "io/citymodel/plane_layer_reader.h"
 #include "io/citymodel/segments_json.h"
+#include "io/citymodel/visibility_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/crs_identity.h"
 #include "io/core/image_io.h"
@@ -133,24 +134,8 @@ EvalReport RunEval(const EvalRequest& r) {
   std::optional<SeenPlaneScores> seen;
   if (!visibility_path.empty()) {
     std::vector<SeenPolygon> polygons;
-    std::ifstream f(visibility_path);
-    const auto j = nlohmann::json::parse(f, nullptr, false);
-    if (!j.is_object() || !j.contains("roof_polygons") || !j["roof_polygons"].is_array())
-      throw Error(visibility_path + ": not a roof visibility file of roofsweep simulate");
-    for (const auto& p : j["roof_polygons"]) {
-      SeenPolygon q;
-      auto numbers = [](const nlohmann::json& a) {
-        return a.is_array() && std::all_of(a.begin(), a.end(),
-                                           [](const nlohmann::json& v) { return v.is_number(); });
-      };
-      if (!p.is_object() || !p.contains("centroid") || !numbers(p["centroid"]) ||
-          p["centroid"].size() != 3 || !p.contains("seen") || !numbers(p["seen"]))
-        throw Error(visibility_path + ": roof polygon " + std::to_string(polygons.size()) +
-                    " has no centroid of three numbers or no list of numbers 'seen'");
-      for (int k = 0; k < 3; ++k) q.centroid[k] = p["centroid"][k].get<double>() - origin[k];
-      for (const auto& v : p["seen"]) q.seen.push_back(v.get<float>());
-      polygons.push_back(std::move(q));
-    }
+    for (RoofVisibilityFile::Polygon& p : ReadRoofVisibilityJson(visibility_path).polygons)
+      polygons.push_back({p.centroid - origin, std::move(p.seen)});
     seen = ScoreSeenPlanes(truth, report.result, polygons);
     const SeenPlaneOptions so;
     char buf[256];

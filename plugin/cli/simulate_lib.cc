@@ -15,6 +15,7 @@
 #include "io/citymodel/citymodel_io.h"
 #include "io/citymodel/ogr_citymodel.h"
 #include "io/citymodel/segments_json.h"
+#include "io/citymodel/visibility_json.h"
 #include "io/core/block_manifest.h"
 #include "io/core/image_io.h"
 #include "io/core/local_frame.h"
@@ -298,19 +299,12 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
 
   // What each view sees of each true roof polygon, for `eval`'s
   // completeness over the roofs the images show (ScoreSeenPlanes).
-  nlohmann::json vis = {{"crs", crs}, {"views", nlohmann::json::array()}};
-  for (const sim::SimulatedView& v : sim.views) vis["views"].push_back(v.name);
-  nlohmann::json& polys = vis["roof_polygons"];
-  polys = nlohmann::json::array();
-  for (const sim::RoofPolygonVisibility& p : sim.roof_visibility) {
-    const Eigen::Vector3d c = frame.ToCrs(p.centroid);
-    nlohmann::json seen = nlohmann::json::array();
-    for (float f : p.seen) seen.push_back(std::round(static_cast<double>(f) * 1000) / 1000);
-    polys.push_back({{"building", truth.buildings[p.building].id},
-                     {"centroid", {c.x(), c.y(), c.z()}},
-                     {"seen", seen}});
-  }
-  WriteText(dir + "/groundtruth_visibility.json", vis.dump(1) + "\n");
+  RoofVisibilityFile vis;
+  vis.crs = crs;
+  for (const sim::SimulatedView& v : sim.views) vis.views.push_back(v.name);
+  for (const sim::RoofPolygonVisibility& p : sim.roof_visibility)
+    vis.polygons.push_back({truth.buildings[p.building].id, frame.ToCrs(p.centroid), p.seen});
+  WriteRoofVisibilityJson(vis, dir + "/groundtruth_visibility.json", false);
 
   SimulateSummary s;
   s.views = static_cast<int>(sim.views.size());
