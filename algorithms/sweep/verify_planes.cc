@@ -693,7 +693,8 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // window's half-width, the moved planes correlate as well as this one
     // whatever its height: its lines decide, if one of them crosses the
     // baselines (see VerifyOptions::height_from_crossing_lines).
-    const bool height_fails = v.score < std::max(v.score_below, v.score_above) + o.min_margin;
+    const bool height_fails =
+        o.height_test && v.score < std::max(v.score_below, v.score_above) + o.min_margin;
     const bool on_lines =
         height_fails &&
         LineCrossesBaseline(parallax, p.lines_xy, o.crossing_line_min_length_m,

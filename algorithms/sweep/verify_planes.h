@@ -59,6 +59,12 @@ struct VerifyOptions {
   double min_offset_m = 0.25;
   double max_offset_m = 5.0;
   double min_margin = 0.1;
+  // Off for a plane whose height is known otherwise: a face mirrored about
+  // a ridge shares the ridge with a face that passed the test
+  // (MirrorCompletionOptions::height_from_ridge). It is then skipped; the
+  // score, slope, off-line and ground tests still apply, and the plane
+  // counts as height-confirmed.
+  bool height_test = true;
   // The tilted alternatives agree with the plane near the patch centre, so
   // the plane need only not lose to them (a margin of 0.1 here rejected a
   // third of the true planes on `realistic`): it is refused when the best

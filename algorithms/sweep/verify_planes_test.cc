@@ -268,17 +268,26 @@ TEST(VerifyPlanes, UntexturedPatchCannotBeVerified) {
   EXPECT_NE(v[0].reason.find("cannot be verified"), std::string::npos) << v[0].reason;
 }
 
-// The face with tile courses along its eave (x), seen by the two views of
-// one strip (baseline along x): a height change moves the texture along
-// itself, and the planes moved up and down correlate as well as the true
-// one.
-TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
+// The face with tile courses along its eave (x), and the two views of one
+// strip (baseline along x) of the four: a height change moves the texture
+// along itself, and the planes moved up and down correlate as well as the
+// true one.
+Quad CoursesAlongTheEave() {
   Quad f = Face(true);
   f.courses_along_u = true;
-  TestScene scene;
-  scene.quads = {f};
+  return f;
+}
+Block OneStrip() {
   Block strip = sweep_test::FourViewBlock();
   strip.views.resize(2);  // (-12, -8) and (12, -8)
+  return strip;
+}
+
+TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
+  const Quad f = CoursesAlongTheEave();
+  TestScene scene;
+  scene.quads = {f};
+  const Block strip = OneStrip();
   const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, strip);
   const std::array<Eigen::Vector2d, 2> eave = {Eigen::Vector2d(-5, 6), Eigen::Vector2d(5, 6)};
   const std::array<Eigen::Vector2d, 2> verge = {Eigen::Vector2d(-5, 0), Eigen::Vector2d(-5, 6)};
@@ -340,6 +349,42 @@ RoofPlaneHypothesis FlatOverShed(double z) {
 // A shed's flat roof whose height the images do not tell (here: a margin
 // no plane can reach) is accepted on its lines when three of its sides are
 // drawn, and not on one side, nor at a height the images like less.
+
+// A face mirrored about a ridge has the ridge's height, which the face it
+// mirrors confirmed: verified without the height test
+// (VerifyOptions::height_test), it is taken where the images of one strip
+// cannot place it, and still refused where they show it is wrong.
+TEST(VerifyPlanes, WithoutTheHeightTestThePlaneIsTakenAtItsHeightUnlessTheImagesRefuteIt) {
+  const Quad f = CoursesAlongTheEave();
+  TestScene scene;
+  scene.quads = {f};
+  const Block strip = OneStrip();
+  const std::array<Eigen::Vector2d, 2> ridge = {Eigen::Vector2d(-5, 0), Eigen::Vector2d(5, 0)};
+  RoofPlaneHypothesis mirrored = Hypothesis(f);
+  mirrored.lines_xy = {ridge};
+  VerifyOptions at_ridge;
+  at_ridge.height_test = false;
+  NullProgress progress;
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, strip);
+  const auto with = VerifyPlanes(strip, images, {mirrored}, VerifyOptions(), progress);
+  const auto without = VerifyPlanes(strip, images, {mirrored}, at_ridge, progress);
+  ASSERT_EQ(with.size(), 1u);
+  ASSERT_EQ(without.size(), 1u);
+  EXPECT_EQ(with[0].reason.rfind("height not confirmed", 0), 0u) << with[0].reason;
+  EXPECT_TRUE(without[0].accepted) << without[0].reason;
+  EXPECT_TRUE(without[0].height_confirmed);
+
+  // Seen across the courses by four views, a plane 1.5 m too high or 15 deg
+  // too steep is refused all the same, by the slope test: a plane turned
+  // about the patch centre fits the images better.
+  const Block block = sweep_test::FourViewBlock();
+  RoofPlaneHypothesis high = Hypothesis(f, 1.5), steep = Hypothesis(f, 0, 15);
+  high.lines_xy = steep.lines_xy = {ridge};
+  const auto wrong =
+      VerifyPlanes(block, sweep_test::RenderAll(scene, block), {high, steep}, at_ridge, progress);
+  ASSERT_EQ(wrong.size(), 2u);
+  for (const PlaneVerification& w : wrong) EXPECT_FALSE(w.accepted) << w.reason;
+}
 TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
   TestScene scene;
   scene.quads = {ShedRoof()};

@@ -687,7 +687,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     t0 = Clock::now();
     std::vector<RoofPlaneHypothesis> mirrored = MirroredFaces(roof_planes, r.mirror);
     const size_t proposed = mirrored.size();
-    const size_t confirmed = add_verified(std::move(mirrored));
+    VerifyOptions at_ridge = r.verify;
+    at_ridge.height_test = !r.mirror.height_from_ridge;
+    const size_t confirmed = add_verified(std::move(mirrored), &at_ridge);
     out.stages.push_back(
         {"mirrored faces",
          StrFormat("%zu faces beyond a ridge proposed, %zu confirmed", proposed, confirmed),
