@@ -39,6 +39,8 @@ struct MirrorCompletionOptions {
   // plane quality +0.18 +- 0.10 from matched lines and +0.63 +- 0.19 with
   // footprints, every plane added a true one, none lost (1 m2: the same).
   double same_angle_deg = 5.0;
+  double same_cover = 0.5;
+  double min_patch_m2 = 2.0;
   // The proposal's height along the ridge is that of the face it mirrors,
   // which passed the verification's height test: the caller verifies it
   // without one (VerifyOptions::height_test). With the test, shaded faces
@@ -47,8 +49,6 @@ struct MirrorCompletionOptions {
   // from matched lines (9 up, 0 down) and +0.12 +- 0.10 with footprints
   // (sweep README, session 65).
   bool height_from_ridge = true;
-  double same_cover = 0.5;
-  double min_patch_m2 = 2.0;
 };
 
 // Completion by symmetry: most pitched roofs are symmetric about the ridge,

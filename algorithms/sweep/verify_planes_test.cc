@@ -324,32 +324,6 @@ TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
   EXPECT_FALSE(w[1].accepted) << w[1].score;
 }
 
-// A shed's flat roof, 6 x 5 m at z = 4.3, and the lines of three of its
-// sides: eave (along x), west and east.
-Quad ShedRoof() {
-  Quad roof;
-  roof.origin = {-3, 0, 4.3};
-  roof.u = {6, 0, 0};
-  roof.v = {0, 5, 0};
-  roof.seed = 7;
-  return roof;
-}
-const std::array<Eigen::Vector2d, 2> kShedEave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
-                                     kShedWest = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
-                                     kShedEast = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
-
-// A flat plane at height z over the shed roof's patch.
-RoofPlaneHypothesis FlatOverShed(double z) {
-  RoofPlaneHypothesis h;
-  h.plane = Eigen::Vector4d(0, 0, 1, -z);
-  h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
-  return h;
-}
-
-// A shed's flat roof whose height the images do not tell (here: a margin
-// no plane can reach) is accepted on its lines when three of its sides are
-// drawn, and not on one side, nor at a height the images like less.
-
 // A face mirrored about a ridge has the ridge's height, which the face it
 // mirrors confirmed: verified without the height test
 // (VerifyOptions::height_test), it is taken where the images of one strip
@@ -385,6 +359,32 @@ TEST(VerifyPlanes, WithoutTheHeightTestThePlaneIsTakenAtItsHeightUnlessTheImages
   ASSERT_EQ(wrong.size(), 2u);
   for (const PlaneVerification& w : wrong) EXPECT_FALSE(w.accepted) << w.reason;
 }
+
+// A shed's flat roof, 6 x 5 m at z = 4.3, and the lines of three of its
+// sides: eave (along x), west and east.
+Quad ShedRoof() {
+  Quad roof;
+  roof.origin = {-3, 0, 4.3};
+  roof.u = {6, 0, 0};
+  roof.v = {0, 5, 0};
+  roof.seed = 7;
+  return roof;
+}
+const std::array<Eigen::Vector2d, 2> kShedEave = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(3, 0)},
+                                     kShedWest = {Eigen::Vector2d(-3, 0), Eigen::Vector2d(-3, 5)},
+                                     kShedEast = {Eigen::Vector2d(3, 0), Eigen::Vector2d(3, 5)};
+
+// A flat plane at height z over the shed roof's patch.
+RoofPlaneHypothesis FlatOverShed(double z) {
+  RoofPlaneHypothesis h;
+  h.plane = Eigen::Vector4d(0, 0, 1, -z);
+  h.patch = {{-2.8, 0.2}, {2.8, 0.2}, {2.8, 4.8}, {-2.8, 4.8}};
+  return h;
+}
+
+// A shed's flat roof whose height the images do not tell (here: a margin
+// no plane can reach) is accepted on its lines when three of its sides are
+// drawn, and not on one side, nor at a height the images like less.
 TEST(VerifyPlanes, HeightTheImagesDoNotTellIsTakenFromLinesDrawingTheOutline) {
   TestScene scene;
   scene.quads = {ShedRoof()};

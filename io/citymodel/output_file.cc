@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "algorithms/core/error.h"
 
@@ -42,6 +43,16 @@ OutputFile::OutputFile(const std::string& path, bool overwrite) : path_(path) {
 
 OutputFile::~OutputFile() {
   if (!committed_) std::remove(temp_.c_str());
+}
+
+void WriteTextFile(const std::string& path, const std::string& text, bool overwrite) {
+  OutputFile out(path, overwrite);
+  {
+    std::ofstream f(out.temp_path());
+    f << text;
+    if (!f) throw Error(path + ": cannot write");
+  }
+  out.Commit();
 }
 
 void OutputFile::Commit() {

@@ -30,6 +30,11 @@ class OutputFile {
   bool committed_ = false;
 };
 
+// Writes `text` to `path` under a temporary name and renames it into
+// place (OutputFile): nothing half-written is left. Throws "PATH: cannot
+// write" when the write fails, or as OutputFile does.
+void WriteTextFile(const std::string& path, const std::string& text, bool overwrite);
+
 // Throws when `path`'s parent folder is missing or `path` exists and
 // `overwrite` is false (the message says to pass overwrite/-overwrite).
 void CheckOutputPath(const std::string& path, bool overwrite);

@@ -52,13 +52,7 @@ void WriteSegmentsJson(const SegmentSet& set, const std::string& path, bool over
                     {"kind", s.kind},
                     {"building", s.building}});
   }
-  OutputFile out(path, overwrite);
-  {
-    std::ofstream f(out.temp_path());
-    f << j.dump(1) << "\n";
-    if (!f) throw Error(path + ": cannot write");
-  }
-  out.Commit();
+  WriteTextFile(path, j.dump(1) + "\n", overwrite);
 }
 
 SegmentSet ReadSegmentsJson(const std::string& path) {

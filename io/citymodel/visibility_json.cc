@@ -22,18 +22,12 @@ void WriteRoofVisibilityJson(const RoofVisibilityFile& file, const std::string& 
                                   {"centroid", {p.centroid.x(), p.centroid.y(), p.centroid.z()}},
                                   {"seen", seen}});
   }
-  OutputFile out(path, overwrite);
-  {
-    std::ofstream f(out.temp_path());
-    f << j.dump(1) << "\n";
-    if (!f) throw Error(path + ": cannot write");
-  }
-  out.Commit();
+  WriteTextFile(path, j.dump(1) + "\n", overwrite);
 }
 
 RoofVisibilityFile ReadRoofVisibilityJson(const std::string& path) {
+  CheckInputFile(path);
   std::ifstream f(path);
-  if (!f) throw Error(path + ": cannot be opened");
   const json j = json::parse(f, nullptr, false);
   if (!j.is_object() || !j.contains("roof_polygons") || !j["roof_polygons"].is_array())
     throw Error(path + ": not a roof visibility file of roofsweep simulate");

@@ -49,13 +49,8 @@ void WriteReport(const std::string& path, const OverlaySummary& s) {
                               {"views", b.views},
                               {"roof_edges", SupportJson(b.roof)}});
   j["messages"] = s.messages;
-  OutputFile file(path, /*overwrite=*/true);  // refused before the work if it existed
-  {
-    std::ofstream f(file.temp_path());
-    f << j.dump(2) << "\n";
-    if (!f) throw Error(path + ": cannot write the report");
-  }
-  file.Commit();
+  // An existing file was refused before the work.
+  WriteTextFile(path, j.dump(2) + "\n", /*overwrite=*/true);
 }
 
 std::string PngName(const std::string& view) {

@@ -190,13 +190,8 @@ void WriteReport(const std::string& path, const RunSummary& s) {
     j["stages"].push_back({{"stage", st.name}, {"result", st.result}, {"seconds", st.seconds}});
   j["rejected"] = s.rejected;
   j["messages"] = s.messages;
-  OutputFile file(path, /*overwrite=*/true);  // refused earlier if it existed without -overwrite
-  {
-    std::ofstream f(file.temp_path());
-    f << j.dump(2) << "\n";
-    if (!f) throw Error(path + ": cannot write the report");
-  }
-  file.Commit();
+  // An existing file was refused before the work unless -overwrite.
+  WriteTextFile(path, j.dump(2) + "\n", /*overwrite=*/true);
 }
 
 // Sets each building's edge_support (BuildingEdgeSupport) and drops those
