@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <set>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
@@ -134,6 +135,36 @@ bool InConflict(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
   }
   *overlap = f;
   return true;
+}
+
+// q's patch cut back to its own side of the convex crease where it meets p
+// (GroupingOptions::conflict_cut_at_crease); empty when they do not meet so.
+Ring2 CutAtConvexCrease(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis& p, double overlap,
+                        const GroupingOptions& o) {
+  if (!o.conflict_cut_at_crease || overlap > o.conflict_meet_max_overlap ||
+      q.lines < o.conflict_cut_min_lines || q.longest_line_m < o.conflict_replace_min_line_m)
+    return {};
+  const auto meet = BorderBetween(q.plane, q.patch, p.plane, p.patch, o.virtual_min_angle_deg,
+                                  o.conflict_meet_max_across);
+  if (!meet) return {};
+  // Signed plan distance from the meet line: a x + b y + c.
+  const double a = -meet->d.y(), b = meet->d.x(), c = -(a * meet->x.x() + b * meet->x.y());
+  Ring2 neg = ClipHalfPlane(q.patch, a, b, c), pos = ClipHalfPlane(q.patch, -a, -b, -c);
+  const double side = std::abs(SignedArea(neg)) >= std::abs(SignedArea(pos)) ? -1.0 : 1.0;
+  Ring2 cut = side < 0 ? std::move(neg) : std::move(pos);
+  if (cut.size() < 3 || std::abs(SignedArea(cut)) <= 0) return {};
+  auto on_side = [&](const std::vector<std::array<Eigen::Vector2d, 2>>& lines, double s) {
+    for (const auto& l : lines)
+      for (const Eigen::Vector2d& x : l)
+        if (s * (a * x.x() + b * x.y() + c) < -o.conflict_meet_line_offset_m) return false;
+    return true;
+  };
+  if (!on_side(q.lines_xy, side) || !on_side(p.lines_xy, -side)) return {};
+  // Convex: over q's side p runs above q (beyond a ridge or a hip each
+  // face rises on; in a valley it would fall below).
+  const Eigen::Vector2d m = FirstMoment(cut) / SignedArea(cut);
+  if (!(PlaneZ(p.plane, m.x(), m.y()) > PlaneZ(q.plane, m.x(), m.y()))) return {};
+  return cut;
 }
 
 // True when a supporting line of q runs inside p's patch at least step_m
@@ -296,8 +327,12 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   // of planes).
   std::vector<Eigen::Vector4d> box(n);
   for (int i = 0; i < n; ++i) box[i] = RingBounds(p[i].patch);
+  // Pairs that meet in a convex crease, the weaker cut back to its side
+  // (conflict_cut_at_crease): the assembly's envelope meets them there.
+  std::set<std::pair<int, int>> creases;
   auto conflict = [&](int a, int b, double* f) {
-    return BoundsMeet(box[a], box[b]) && InConflict(p[a], p[b], o, f);
+    return BoundsMeet(box[a], box[b]) && !creases.count({std::min(a, b), std::max(a, b)}) &&
+           InConflict(p[a], p[b], o, f);
   };
 
   std::vector<char> in(n, 0);
@@ -305,17 +340,30 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   for (int k : by_score) {
     int with = -1;
     double overlap = 0;
-    for (int j : by_score) {
-      if (j == k) break;  // only stronger planes were decided
-      if (in[j] && conflict(k, j, &overlap)) {
-        with = j;
-        break;
+    const Ring2 whole = p[k].patch;
+    // A hipped end can meet a face at each of its two hips.
+    for (int cuts = 0;; ++cuts) {
+      with = -1;
+      for (int j : by_score) {
+        if (j == k) break;  // only stronger planes were decided
+        if (in[j] && conflict(k, j, &overlap)) {
+          with = j;
+          break;
+        }
       }
+      if (with < 0 || cuts == 2) break;
+      Ring2 cut = CutAtConvexCrease(p[k], p[with], overlap, o);
+      if (cut.empty()) break;
+      p[k].patch = std::move(cut);
+      creases.insert({std::min(k, with), std::max(k, with)});
     }
     if (with < 0) {
       in[k] = 1;
       continue;
     }
+    p[k].patch = whole;
+    for (auto it = creases.begin(); it != creases.end();)
+      it = it->first == k || it->second == k ? creases.erase(it) : std::next(it);
     reason[k] = StrFormat("%s: overlaps the stronger %s by %.0f %% in plan view", p[k].id.c_str(),
                           p[with].id.c_str(), 100 * overlap);
   }

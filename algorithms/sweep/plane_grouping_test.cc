@@ -356,6 +356,62 @@ TEST(PlaneGrouping, TheTwoFacesOfAGableMeetAtTheRidgeInsteadOfConflicting) {
   EXPECT_EQ(planes[0].id, "south");
 }
 
+TEST(PlaneGrouping, AHipEndIsCutAtItsHipRatherThanDroppedForTheLongFaceOverIt) {
+  // Hipped roof over x in [0, 8], y in [0, 12], eaves at z = 6, 45 deg: the
+  // west face z = 6 + x and the south hip end z = 6 + y meet along the hip
+  // x = y. The west face's patch runs over the hip end, as a patch grown
+  // from its eave does, and overlaps it by 56 %.
+  const Eigen::Vector3d west_n = Eigen::Vector3d(-1, 0, 1).normalized();
+  const Eigen::Vector3d south_n = Eigen::Vector3d(0, -1, 1).normalized();
+  const Eigen::Vector3d corner(0, 0, 6);
+  RoofPlaneHypothesis west = WithSimilarity(Face("west", west_n, corner, 0, 0, 4.5, 12, 3), 0.8);
+  west.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 12)},  // eave
+                   {Eigen::Vector2d(4, 4), Eigen::Vector2d(4, 8)}};  // ridge
+  RoofPlaneHypothesis south = WithSimilarity(Face("south", south_n, corner, 0, 0, 8, 4.5, 1), 0.8);
+  south.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(8, 0)},   // eave
+                    {Eigen::Vector2d(8, 0), Eigen::Vector2d(4, 4)}};  // the other hip
+  std::vector<RoofPlaneHypothesis> planes = {west, south};
+  EXPECT_TRUE(ResolveConflicts(&planes, GroupingOptions{}).empty());
+  ASSERT_EQ(planes.size(), 2u);
+  // The hip end keeps its side of the hip only.
+  EXPECT_NEAR(std::abs(SignedArea(planes[1].patch)), 36 - 0.5 * 4.5 * 4.5, 1e-6);
+  for (const Eigen::Vector2d& x : planes[1].patch) EXPECT_LE(x.y(), x.x() + 1e-9);
+
+  // Without the rule the hip end goes.
+  GroupingOptions off;
+  off.conflict_cut_at_crease = false;
+  planes = {west, south};
+  ASSERT_EQ(ResolveConflicts(&planes, off).size(), 1u);
+  EXPECT_EQ(planes[0].id, "west");
+
+  // A line of the hip end that runs across the hip says the border is not
+  // there.
+  RoofPlaneHypothesis across = south;
+  across.lines_xy.push_back({Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 6)});
+  planes = {west, across};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  EXPECT_EQ(planes[0].id, "west");
+
+  // Nor is a plane cut that meets the west face in a valley, rising above
+  // it on its own side (z = 6 + 2x - y): the west face would be the roof
+  // there.
+  const Eigen::Vector3d valley_n = Eigen::Vector3d(-2, 1, 1).normalized();
+  RoofPlaneHypothesis valley = south;
+  valley.id = "valley";
+  valley.plane << valley_n, -valley_n.dot(corner);
+  planes = {west, valley};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  EXPECT_EQ(planes[0].id, "west");
+
+  // Nor a plane of one line: the cut needs a face, not a fragment.
+  RoofPlaneHypothesis one_line =
+      WithSimilarity(Face("one", south_n, corner, 0, 0, 8, 4.5, 1), 0.8, 1);
+  one_line.lines_xy = {south.lines_xy[0]};
+  planes = {west, one_line};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  EXPECT_EQ(planes[0].id, "west");
+}
+
 TEST(PlaneGrouping, AFlatPlaneUnderARidgeLineGivesWayToTheFacesThatHoldIt) {
   // The top of a mansard roof: two faces of 10 deg rise from the break
   // lines (x = 0 and x = 5, z = 10) to a ridge 0.44 m higher. The flat
