@@ -337,135 +337,160 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
 
   std::vector<char> in(n, 0);
   std::vector<std::string> reason(n);
-  for (int k : by_score) {
-    int with = -1;
-    double overlap = 0;
-    const Ring2 whole = p[k].patch;
-    // A hipped end can meet a face at each of its two hips.
-    for (int cuts = 0;; ++cuts) {
-      with = -1;
-      for (int j : by_score) {
-        if (j == k) break;  // only stronger planes were decided
-        if (in[j] && conflict(k, j, &overlap)) {
-          with = j;
-          break;
+  // A plane the several faces replaced goes for good, and the conflicts
+  // are settled again without it: the planes it had pushed out are decided
+  // anew (see conflict_redecide).
+  std::vector<char> replaced(n, 0), promoted(n, 0);
+  const std::vector<RoofPlaneHypothesis> original = p;
+  for (bool again = true; again;) {
+    again = false;
+    std::fill(in.begin(), in.end(), 0);
+    creases.clear();
+    for (int k = 0; k < n; ++k) {
+      p[k].patch = original[k].patch;
+      if (!replaced[k]) reason[k].clear();
+    }
+    // The faces that replaced a plane are decided first: they won against
+    // it, and a plane it had pushed out must not now push them out.
+    std::vector<int> order;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int k : by_score)
+        if (!replaced[k] && promoted[k] == (pass == 0)) order.push_back(k);
+    for (int k : order) {
+      int with = -1;
+      double overlap = 0;
+      const Ring2 whole = p[k].patch;
+      // A hipped end can meet a face at each of its two hips.
+      for (int cuts = 0;; ++cuts) {
+        with = -1;
+        for (int j : order) {
+          if (j == k) break;  // only stronger planes were decided
+          if (in[j] && conflict(k, j, &overlap)) {
+            with = j;
+            break;
+          }
         }
+        if (with < 0 || cuts == 2) break;
+        Ring2 cut = CutAtConvexCrease(p[k], p[with], overlap, o);
+        if (cut.empty()) break;
+        p[k].patch = std::move(cut);
+        creases.insert({std::min(k, with), std::max(k, with)});
       }
-      if (with < 0 || cuts == 2) break;
-      Ring2 cut = CutAtConvexCrease(p[k], p[with], overlap, o);
-      if (cut.empty()) break;
-      p[k].patch = std::move(cut);
-      creases.insert({std::min(k, with), std::max(k, with)});
+      if (with < 0) {
+        in[k] = 1;
+        continue;
+      }
+      p[k].patch = whole;
+      for (auto it = creases.begin(); it != creases.end();)
+        it = it->first == k || it->second == k ? creases.erase(it) : std::next(it);
+      reason[k] = StrFormat("%s: overlaps the stronger %s by %.0f %% in plan view", p[k].id.c_str(),
+                            p[with].id.c_str(), 100 * overlap);
     }
-    if (with < 0) {
-      in[k] = 1;
-      continue;
-    }
-    p[k].patch = whole;
-    for (auto it = creases.begin(); it != creases.end();)
-      it = it->first == k || it->second == k ? creases.erase(it) : std::next(it);
-    reason[k] = StrFormat("%s: overlaps the stronger %s by %.0f %% in plan view", p[k].id.c_str(),
-                          p[with].id.c_str(), 100 * overlap);
-  }
 
-  // A derived face against small found planes (see
-  // GroupingOptions::derived_displaces_fraction): it takes their place when
-  // every kept plane it conflicts with is found and that small, or a
-  // smaller coplanar fragment of it (derived_absorbs_coplanar). Derived
-  // planes only come in and found ones only go out, so it ends.
-  for (bool changed = o.derived_displaces_fraction > 0 || o.derived_absorbs_coplanar; changed;) {
-    changed = false;
-    for (int d : by_score) {
-      if (in[d] || !p[d].derived) continue;
-      const double area = std::abs(SignedArea(p[d].patch));
-      const double limit = o.derived_displaces_fraction * area;
-      std::vector<int> rivals;
-      bool small = true;
-      double f = 0;
-      for (int j = 0; j < n && small; ++j) {
-        if (!in[j] || !conflict(d, j, &f)) continue;
-        const double a = std::abs(SignedArea(p[j].patch));
-        small =
-            !p[j].derived &&
-            (a < limit ||
-             (o.derived_absorbs_coplanar && a < area && CoplanarWith(p[d], p[j], o) &&
-              LineDepthInside(p[d].patch, p[j].lines_xy) <= o.derived_absorbs_max_line_depth_m));
-        rivals.push_back(j);
-      }
-      if (!small || rivals.empty()) continue;
-      for (int j : rivals) {
-        in[j] = 0;
-        reason[j] =
-            std::abs(SignedArea(p[j].patch)) < limit
-                ? StrFormat("%s: lies in the derived %s, more than %.0f times its area",
-                            p[j].id.c_str(), p[d].id.c_str(), 1 / o.derived_displaces_fraction)
-                : StrFormat("%s: lies in the derived %s, larger and coplanar with it",
-                            p[j].id.c_str(), p[d].id.c_str());
-      }
-      in[d] = 1;
-      reason[d].clear();
-      changed = true;
-    }
-  }
-
-  // One strong plane against several: the greedy order compares pairs, so
-  // a plane carried over two neighbouring faces (the north faces of two
-  // terraced houses whose ridges differ by a metre) beats each by its
-  // area, though each fits the images better. Where such rejected planes
-  // conflict with no kept plane but that one, do not conflict with each
-  // other, each fit the images clearly better (conflict_replace_min_gain
-  // higher verified similarity), have min_lines lines and
-  // one of conflict_replace_min_line_m, and together hold more
-  // evidence (score) than it, they replace it: a local improvement of the
-  // kept set's total evidence, so it ends.
-  for (bool changed = o.conflict_replace_by_several; changed;) {
-    changed = false;
-    for (int big : by_score) {
-      if (!in[big]) continue;
-      std::vector<int> chosen;
-      double sum = 0;
-      int by_line = 0;
-      // The faces that fit the images clearly better are chosen first;
-      // those with a line off the kept plane fill in where they do not
-      // clash with them.
-      for (int pass = 0; pass < 2; ++pass)
-        for (int q : by_score) {
-          // Faces, not fragments: small planes of one short line fit a few
-          // samples well, and together outweighed a flat roof (realistic
-          // s17); later stages drop them.
-          if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) || p[q].lines < o.min_lines ||
-              p[q].longest_line_m < o.conflict_replace_min_line_m)
-            continue;
-          const bool better = p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain;
-          if (pass == 0 ? !better
-                        : better || !(o.conflict_replace_min_step_m > 0 &&
-                                      LineOffPlane(p[q], p[big], o.conflict_replace_min_step_m)))
-            continue;
-          double f = 0;
-          if (!conflict(q, big, &f)) continue;
-          auto clashes = [&](int j) { return j != big && j != q && conflict(q, j, &f); };
-          bool free = true;
-          for (int j = 0; j < n && free; ++j) free = !(in[j] && clashes(j));
-          for (size_t c = 0; c < chosen.size() && free; ++c) free = !clashes(chosen[c]);
-          if (!free) continue;
-          chosen.push_back(q);
-          sum += p[q].score;
-          by_line += pass;
+    // A derived face against small found planes (see
+    // GroupingOptions::derived_displaces_fraction): it takes their place when
+    // every kept plane it conflicts with is found and that small, or a
+    // smaller coplanar fragment of it (derived_absorbs_coplanar). Derived
+    // planes only come in and found ones only go out, so it ends.
+    for (bool changed = o.derived_displaces_fraction > 0 || o.derived_absorbs_coplanar; changed;) {
+      changed = false;
+      for (int d : by_score) {
+        if (in[d] || !p[d].derived) continue;
+        const double area = std::abs(SignedArea(p[d].patch));
+        const double limit = o.derived_displaces_fraction * area;
+        std::vector<int> rivals;
+        bool small = true;
+        double f = 0;
+        for (int j = 0; j < n && small; ++j) {
+          if (!in[j] || !conflict(d, j, &f)) continue;
+          const double a = std::abs(SignedArea(p[j].patch));
+          small =
+              !p[j].derived &&
+              (a < limit ||
+               (o.derived_absorbs_coplanar && a < area && CoplanarWith(p[d], p[j], o) &&
+                LineDepthInside(p[d].patch, p[j].lines_xy) <= o.derived_absorbs_max_line_depth_m));
+          rivals.push_back(j);
         }
-      if (chosen.size() < 2 || !(sum > p[big].score)) continue;
-      std::string names;
-      for (int q : chosen) {
-        in[q] = 1;
-        reason[q].clear();
-        names += (names.empty() ? "" : ", ") + p[q].id;
+        if (!small || rivals.empty()) continue;
+        for (int j : rivals) {
+          in[j] = 0;
+          reason[j] =
+              std::abs(SignedArea(p[j].patch)) < limit
+                  ? StrFormat("%s: lies in the derived %s, more than %.0f times its area",
+                              p[j].id.c_str(), p[d].id.c_str(), 1 / o.derived_displaces_fraction)
+                  : StrFormat("%s: lies in the derived %s, larger and coplanar with it",
+                              p[j].id.c_str(), p[d].id.c_str());
+        }
+        in[d] = 1;
+        reason[d].clear();
+        changed = true;
       }
-      in[big] = 0;
-      reason[big] = StrFormat(
-          "%s: overlaps %zu planes that each fit the images better%s and together hold more "
-          "evidence (%.1f against %.1f): %s",
-          p[big].id.c_str(), chosen.size(), by_line > 0 ? " or hold a line off it," : "", sum,
-          p[big].score, names.c_str());
-      changed = true;
+    }
+
+    // One strong plane against several: the greedy order compares pairs, so
+    // a plane carried over two neighbouring faces (the north faces of two
+    // terraced houses whose ridges differ by a metre) beats each by its
+    // area, though each fits the images better. Where such rejected planes
+    // conflict with no kept plane but that one, do not conflict with each
+    // other, each fit the images clearly better (conflict_replace_min_gain
+    // higher verified similarity), have min_lines lines and
+    // one of conflict_replace_min_line_m, and together hold more
+    // evidence (score) than it, they replace it: a local improvement of the
+    // kept set's total evidence, so it ends.
+    for (bool changed = o.conflict_replace_by_several; changed;) {
+      changed = false;
+      for (int big : by_score) {
+        if (!in[big]) continue;
+        std::vector<int> chosen;
+        double sum = 0;
+        int by_line = 0;
+        // The faces that fit the images clearly better are chosen first;
+        // those with a line off the kept plane fill in where they do not
+        // clash with them.
+        for (int pass = 0; pass < 2; ++pass)
+          for (int q : by_score) {
+            // Faces, not fragments: small planes of one short line fit a few
+            // samples well, and together outweighed a flat roof (realistic
+            // s17); later stages drop them.
+            if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) || p[q].lines < o.min_lines ||
+                p[q].longest_line_m < o.conflict_replace_min_line_m)
+              continue;
+            const bool better = p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain;
+            if (pass == 0 ? !better
+                          : better || !(o.conflict_replace_min_step_m > 0 &&
+                                        LineOffPlane(p[q], p[big], o.conflict_replace_min_step_m)))
+              continue;
+            double f = 0;
+            if (!conflict(q, big, &f)) continue;
+            auto clashes = [&](int j) { return j != big && j != q && conflict(q, j, &f); };
+            bool free = true;
+            for (int j = 0; j < n && free; ++j) free = !(in[j] && clashes(j));
+            for (size_t c = 0; c < chosen.size() && free; ++c) free = !clashes(chosen[c]);
+            if (!free) continue;
+            chosen.push_back(q);
+            sum += p[q].score;
+            by_line += pass;
+          }
+        if (chosen.size() < 2 || !(sum > p[big].score)) continue;
+        std::string names;
+        for (int q : chosen) {
+          in[q] = 1;
+          reason[q].clear();
+          names += (names.empty() ? "" : ", ") + p[q].id;
+        }
+        in[big] = 0;
+        if (o.conflict_redecide) {
+          replaced[big] = 1;
+          for (int q : chosen) promoted[q] = 1;
+          again = true;
+        }
+        reason[big] = StrFormat(
+            "%s: overlaps %zu planes that each fit the images better%s and together hold more "
+            "evidence (%.1f against %.1f): %s",
+            p[big].id.c_str(), chosen.size(), by_line > 0 ? " or hold a line off it," : "", sum,
+            p[big].score, names.c_str());
+        changed = true;
+      }
     }
   }
 

@@ -69,6 +69,12 @@ struct GroupingOptions {
   // long: faces that stand on their own, not fragments of one (as
   // AssemblyOptions::min_line_length_m).
   bool conflict_replace_by_several = true;
+  // Then the conflicts are settled again without the replaced plane, the
+  // faces that replaced it decided first: the planes it had pushed out may
+  // come in where they clash with no kept plane (on `realistic-7` s1 a
+  // mansard's top face had lost to a 7 deg plane of one line across the
+  // top, which its two faces then replaced).
+  bool conflict_redecide = true;
   double conflict_replace_min_gain = 0.1;
   // ... or, instead of the gain, one of its supporting lines runs inside
   // the kept plane's patch at least conflict_replace_min_step_m above or

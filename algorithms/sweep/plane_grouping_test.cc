@@ -559,6 +559,53 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   EXPECT_EQ(planes[1].id, "other");
 }
 
+TEST(PlaneGrouping, APlanePushedOutByAReplacedPlaneIsDecidedAgain) {
+  // The terraced faces of the test above replace the plane across them;
+  // a lower roof in front of them (a flat annex, 4 x 7.6 m) had lost to that
+  // plane (74 % of it under its patch) but overlaps neither face by more
+  // than half.
+  const Eigen::Vector3d north = Eigen::Vector3d(0, 3, 4).normalized();
+  const RoofPlaneHypothesis west =
+      WithSimilarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.93);
+  const RoofPlaneHypothesis east =
+      WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89);
+  const RoofPlaneHypothesis across =
+      WithSimilarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 15 * 5.6), 0.74);
+  const RoofPlaneHypothesis annex =
+      WithSimilarity(Face("annex", {0, 0, 1}, {0, 0, 3}, 5.5, -2, 9.5, 5.6, 30), 0.8);
+  std::vector<RoofPlaneHypothesis> planes = {across, west, east, annex};
+  std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_EQ(planes[0].id, "west");
+  EXPECT_EQ(planes[1].id, "east");
+  EXPECT_EQ(planes[2].id, "annex");
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_EQ(rejected[0].rfind("across: overlaps 2 planes", 0), 0u) << rejected[0];
+
+  // Without deciding again it stays out for a plane that is not built.
+  GroupingOptions once;
+  once.conflict_redecide = false;
+  planes = {across, west, east, annex};
+  rejected = ResolveConflicts(&planes, once);
+  ASSERT_EQ(planes.size(), 2u);
+  ASSERT_EQ(rejected.size(), 2u);
+  EXPECT_EQ(rejected[1].rfind("annex: overlaps the stronger across", 0), 0u) << rejected[1];
+
+  // Decided again, a plane the replaced one had pushed out does not push
+  // out the faces that replaced it: an annex as strong as the faces, over
+  // the east face by 46 % but past the 50 % with a face grown a little,
+  // stays out.
+  const RoofPlaneHypothesis wide_east =
+      WithSimilarity(Face("east", north, {0, 0, 8.0}, 6.5, 0, 15, 5.6, 8.5 * 5.6), 0.89);
+  const RoofPlaneHypothesis strong_annex =
+      WithSimilarity(Face("annex", {0, 0, 1}, {0, 0, 3}, 5.5, -2, 9.5, 5.6, 55), 0.8);
+  planes = {across, west, wide_east, strong_annex};
+  rejected = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "west");
+  EXPECT_EQ(planes[1].id, "east");
+}
+
 TEST(PlaneGrouping, WholePipelineGivesAClosedGable) {
   Gable g;
   const std::vector<HalfPlane> hps = {
