@@ -341,13 +341,14 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   // are settled again without it: the planes it had pushed out are decided
   // anew (see conflict_redecide).
   std::vector<char> replaced(n, 0), promoted(n, 0);
-  const std::vector<RoofPlaneHypothesis> original = p;
+  std::vector<Ring2> whole_patch(n);
+  for (int k = 0; k < n; ++k) whole_patch[k] = p[k].patch;
   for (bool again = true; again;) {
     again = false;
     std::fill(in.begin(), in.end(), 0);
     creases.clear();
     for (int k = 0; k < n; ++k) {
-      p[k].patch = original[k].patch;
+      p[k].patch = whole_patch[k];
       if (!replaced[k]) reason[k].clear();
     }
     // The faces that replaced a plane are decided first: they won against
@@ -359,7 +360,6 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
     for (int k : order) {
       int with = -1;
       double overlap = 0;
-      const Ring2 whole = p[k].patch;
       // A hipped end can meet a face at each of its two hips.
       for (int cuts = 0;; ++cuts) {
         with = -1;
@@ -380,7 +380,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         in[k] = 1;
         continue;
       }
-      p[k].patch = whole;
+      p[k].patch = whole_patch[k];
       for (auto it = creases.begin(); it != creases.end();)
         it = it->first == k || it->second == k ? creases.erase(it) : std::next(it);
       reason[k] = StrFormat("%s: overlaps the stronger %s by %.0f %% in plan view", p[k].id.c_str(),
@@ -395,7 +395,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
     for (bool changed = o.derived_displaces_fraction > 0 || o.derived_absorbs_coplanar; changed;) {
       changed = false;
       for (int d : by_score) {
-        if (in[d] || !p[d].derived) continue;
+        if (in[d] || replaced[d] || !p[d].derived) continue;
         const double area = std::abs(SignedArea(p[d].patch));
         const double limit = o.derived_displaces_fraction * area;
         std::vector<int> rivals;
@@ -452,8 +452,8 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
             // Faces, not fragments: small planes of one short line fit a few
             // samples well, and together outweighed a flat roof (realistic
             // s17); later stages drop them.
-            if (in[q] || ConflictClass(p[q]) > ConflictClass(p[big]) || p[q].lines < o.min_lines ||
-                p[q].longest_line_m < o.conflict_replace_min_line_m)
+            if (in[q] || replaced[q] || ConflictClass(p[q]) > ConflictClass(p[big]) ||
+                p[q].lines < o.min_lines || p[q].longest_line_m < o.conflict_replace_min_line_m)
               continue;
             const bool better = p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain;
             if (pass == 0 ? !better
@@ -479,7 +479,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
           names += (names.empty() ? "" : ", ") + p[q].id;
         }
         in[big] = 0;
-        if (o.conflict_redecide) {
+        if (o.conflict_redecide && !replaced[big]) {
           replaced[big] = 1;
           for (int q : chosen) promoted[q] = 1;
           again = true;

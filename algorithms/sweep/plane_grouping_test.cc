@@ -473,17 +473,23 @@ TEST(PlaneGrouping, AFlatPlaneUnderARidgeLineGivesWayToTheFacesThatHoldIt) {
   EXPECT_EQ(planes[0].id, "flat");
 }
 
-TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
-  // Two terraced houses, 7 and 8 m wide, whose north faces (36.9 deg) have
-  // ridges 1.2 m apart in height; one plane carried over both beats each
-  // face alone by its area, though each face fits the images better.
-  const Eigen::Vector3d north = Eigen::Vector3d(0, 3, 4).normalized();
-  const RoofPlaneHypothesis west =
+// Two terraced houses, 7 and 8 m wide, whose north faces (36.9 deg) have
+// ridges 1.2 m apart in height; one plane carried over both beats each
+// face alone by its area, though each face fits the images better.
+struct Terrace {
+  Eigen::Vector3d north = Eigen::Vector3d(0, 3, 4).normalized();
+  RoofPlaneHypothesis west =
       WithSimilarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.93);
-  const RoofPlaneHypothesis east =
+  RoofPlaneHypothesis east =
       WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89);
-  const RoofPlaneHypothesis across =
+  RoofPlaneHypothesis across =
       WithSimilarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 15 * 5.6), 0.74);
+};
+
+TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
+  const Terrace t;
+  const Eigen::Vector3d& north = t.north;
+  const RoofPlaneHypothesis &west = t.west, &east = t.east, &across = t.across;
   std::vector<RoofPlaneHypothesis> planes = {across, west, east};
   std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 2u);
@@ -560,17 +566,13 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
 }
 
 TEST(PlaneGrouping, APlanePushedOutByAReplacedPlaneIsDecidedAgain) {
-  // The terraced faces of the test above replace the plane across them;
+  // The terraced faces replace the plane across them;
   // a lower roof in front of them (a flat annex, 4 x 7.6 m) had lost to that
   // plane (74 % of it under its patch) but overlaps neither face by more
   // than half.
-  const Eigen::Vector3d north = Eigen::Vector3d(0, 3, 4).normalized();
-  const RoofPlaneHypothesis west =
-      WithSimilarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.93);
-  const RoofPlaneHypothesis east =
-      WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89);
-  const RoofPlaneHypothesis across =
-      WithSimilarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 15 * 5.6), 0.74);
+  const Terrace t;
+  const Eigen::Vector3d& north = t.north;
+  const RoofPlaneHypothesis &west = t.west, &east = t.east, &across = t.across;
   const RoofPlaneHypothesis annex =
       WithSimilarity(Face("annex", {0, 0, 1}, {0, 0, 3}, 5.5, -2, 9.5, 5.6, 30), 0.8);
   std::vector<RoofPlaneHypothesis> planes = {across, west, east, annex};
