@@ -318,6 +318,58 @@ std::vector<std::string> DropRefusedRoofs(std::vector<RoofPlaneHypothesis>* plan
 
 namespace {
 
+// The pieces of `patch` over each footprint it meets by at least
+// min_piece_m2, and its area over all footprints.
+struct OverFootprints {
+  std::vector<std::pair<int, std::vector<Ring2>>> pieces;
+  double inside = 0;
+};
+OverFootprints PatchOverFootprints(const Ring2& patch, const std::vector<Footprint>& footprints,
+                                   const std::vector<Eigen::Vector4d>& bounds,
+                                   double min_piece_m2) {
+  OverFootprints out;
+  const Eigen::Vector4d pb = RingBounds(patch);
+  for (size_t f = 0; f < footprints.size(); ++f) {
+    if (!BoundsMeet(pb, bounds[f])) continue;
+    std::vector<Ring2> pieces = IntersectPolygons(patch, footprints[f].outline);
+    double a = 0;
+    for (const Ring2& r : pieces) a += SignedArea(r);
+    out.inside += a;
+    if (a >= min_piece_m2) out.pieces.emplace_back(static_cast<int>(f), std::move(pieces));
+  }
+  return out;
+}
+
+std::string OutsideFootprintsReason(double inside, double area, const AssemblyOptions& o) {
+  return StrFormat(": %.0f %% of its patch over a footprint < %.0f %%", 100 * inside / area,
+                   100 * o.footprint_min_inside);
+}
+
+}  // namespace
+
+std::vector<std::string> DropOutsideFootprints(std::vector<RoofPlaneHypothesis>* planes,
+                                               const std::vector<Footprint>& footprints,
+                                               const AssemblyOptions& o) {
+  if (footprints.empty()) return {};
+  std::vector<Eigen::Vector4d> bounds;
+  for (const Footprint& f : footprints) bounds.push_back(RingBounds(f.outline));
+  std::vector<std::string> reasons;
+  std::vector<RoofPlaneHypothesis> kept;
+  for (RoofPlaneHypothesis& p : *planes) {
+    const double area = std::abs(SignedArea(p.patch));
+    const OverFootprints over =
+        PatchOverFootprints(p.patch, footprints, bounds, o.footprint_min_piece_m2);
+    if (over.inside < o.footprint_min_inside * area || over.pieces.empty())
+      reasons.push_back(p.id + OutsideFootprintsReason(over.inside, area, o));
+    else
+      kept.push_back(std::move(p));
+  }
+  *planes = std::move(kept);
+  return reasons;
+}
+
+namespace {
+
 // Plausible roof planes of the input, with the reasons for the others.
 std::vector<int> PlausiblePlanes(const std::vector<RoofPlaneHypothesis>& planes,
                                  const GroundModel& ground, const AssemblyOptions& o,
@@ -398,20 +450,10 @@ std::vector<RoofPlaneHypothesis> CutAtFootprints(
     const RoofPlaneHypothesis& p = planes[i];
     const std::string name = p.id.empty() ? StrFormat("plane %d", i) : p.id;
     const double area = std::abs(SignedArea(p.patch));
-    const Eigen::Vector4d pb = RingBounds(p.patch);
-    std::vector<std::pair<int, std::vector<Ring2>>> over;
-    double inside = 0;
-    for (size_t f = 0; f < footprints.size(); ++f) {
-      if (!BoundsMeet(pb, bounds[f])) continue;
-      std::vector<Ring2> pieces = IntersectPolygons(p.patch, footprints[f].outline);
-      double a = 0;
-      for (const Ring2& r : pieces) a += SignedArea(r);
-      inside += a;
-      if (a >= o.footprint_min_piece_m2) over.emplace_back(static_cast<int>(f), std::move(pieces));
-    }
+    auto [over, inside] =
+        PatchOverFootprints(p.patch, footprints, bounds, o.footprint_min_piece_m2);
     if (inside < o.footprint_min_inside * area || over.empty()) {
-      rejected->push_back(name + StrFormat(": %.0f %% of its patch over a footprint < %.0f %%",
-                                           100 * inside / area, 100 * o.footprint_min_inside));
+      rejected->push_back(name + OutsideFootprintsReason(inside, area, o));
       continue;
     }
     for (auto& [f, pieces] : over) {

@@ -329,6 +329,14 @@ std::vector<std::string> DropRefusedRoofs(std::vector<RoofPlaneHypothesis>* plan
                                           const GroundModel& ground, const AssemblyOptions& options,
                                           const std::vector<char>* spare_short = nullptr);
 
+// With footprints: removes from `planes` those the assembly would drop as
+// lying mostly outside every footprint (footprint_min_inside,
+// footprint_min_piece_m2), keeping the order of the others; returns "id:
+// reason" for each. Like DropRefusedRoofs, for before the conflicts.
+std::vector<std::string> DropOutsideFootprints(std::vector<RoofPlaneHypothesis>* planes,
+                                               const std::vector<Footprint>& footprints,
+                                               const AssemblyOptions& options);
+
 // Roof type (roof_type:: code) from the roof faces: flat, monopitch,
 // gabled, hipped, pavilion (pyramid) or combination. Faces under 5 % of
 // the roof area are ignored (slivers of the envelope). A face is a

@@ -647,6 +647,34 @@ Footprint Fp(const std::string& id, Ring2 outline) {
   return f;
 }
 
+TEST(AssembleBuildings, PlanesMostlyOutsideTheFootprintsAreDroppedWithTheirReasons) {
+  // The gable's faces over its footprint, a plane with a third of its patch
+  // over it (a neighbour's face run over the eave) and one with five
+  // sixths.
+  std::vector<RoofPlaneHypothesis> in = Gable();
+  in.push_back(Hyp(SlopedPlane({8, 4, 6}, 30, -90), {{8, 0}, {14, 0}, {14, 4}, {8, 4}}));
+  in.push_back(Hyp(SlopedPlane({5, 4, 6}, 30, 90), {{5, 4}, {11, 4}, {11, 8}, {5, 8}}));
+  for (size_t i = 0; i < in.size(); ++i) in[i].id = "plane " + std::to_string(i);
+  const std::vector<Footprint> footprints = {Fp("house", {{0, 0}, {10, 0}, {10, 8}, {0, 8}})};
+
+  std::vector<RoofPlaneHypothesis> planes = in;
+  const std::vector<std::string> reasons =
+      DropOutsideFootprints(&planes, footprints, AssemblyOptions{});
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_EQ(planes[2].id, "plane 3");
+  ASSERT_EQ(reasons.size(), 1u);
+  EXPECT_EQ(reasons[0], "plane 2: 33 % of its patch over a footprint < 50 %");
+
+  // The assembly refuses it for the same reason.
+  const AssemblyResult r = AssembleBuildings(in, Flat(0), AssemblyOptions{}, footprints);
+  EXPECT_TRUE(Mentions(r.rejected, reasons[0], ""));
+
+  // Without footprints nothing is dropped.
+  planes = in;
+  EXPECT_TRUE(DropOutsideFootprints(&planes, {}, AssemblyOptions{}).empty());
+  EXPECT_EQ(planes.size(), 4u);
+}
+
 int Count(const Building& b, SurfaceType t) {
   int n = 0;
   for (const Surface& s : b.surfaces) n += s.type == t;

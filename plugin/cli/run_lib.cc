@@ -493,14 +493,19 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     const std::vector<std::string> too_short =
         DropRefusedRoofs(&verified, block.ground, assembly_options, &may_merge);
     refused.insert(refused.end(), too_short.begin(), too_short.end());
+    // So does a plane mostly outside every footprint.
+    const std::vector<std::string> outside =
+        DropOutsideFootprints(&verified, footprints, assembly_options);
+    refused.insert(refused.end(), outside.begin(), outside.end());
     rejected.insert(rejected.end(), refused.begin(), refused.end());
     const std::vector<std::string> settled = SettleVerifiedPlanes(&verified, r.grouping);
     rejected.insert(rejected.end(), settled.begin(), settled.end());
     out.stages.push_back(
         {std::string("verification") + pass,
-         StrFormat("%zu of %zu planes confirmed, %zu of them no roof (too low, too steep), %zu "
-                   "left after conflicts",
-                   n_verified, n_planes, refused.size(), verified.size()),
+         StrFormat("%zu of %zu planes confirmed, %zu of them no roof (too low, too steep%s), "
+                   "%zu left after conflicts",
+                   n_verified, n_planes, refused.size(),
+                   footprints.empty() ? "" : ", off the footprints", verified.size()),
          Since(t0)});
     if (final_pass) out.rejected.insert(out.rejected.end(), rejected.begin(), rejected.end());
     return verified;
