@@ -68,6 +68,9 @@ std::pair<double, double> LineInterval(const Ring2& ring, const Eigen::Vector2d&
 struct MeetLine {
   Eigen::Vector2d x, d;
   double plan_to_3d = 1;  // 3D length per plan length along the line
+  // The first patch lies mostly where a x + b y + c < 0, with (a, b) = d
+  // turned left and the line through x (the second on the other side).
+  bool first_on_negative = false;
 };
 std::optional<MeetLine> BorderBetween(const Eigen::Vector4d& p_plane, const Ring2& p_patch,
                                       const Eigen::Vector4d& q_plane, const Ring2& q_patch,
@@ -92,7 +95,7 @@ std::optional<MeetLine> BorderBetween(const Eigen::Vector4d& p_plane, const Ring
   if (p_on_neg == q_on_neg) return std::nullopt;  // both on one side: no border between them
   if (std::min(p_neg, p_pos) > max_across * pa || std::min(q_neg, q_pos) > max_across * qa)
     return std::nullopt;
-  return MeetLine{x, d, u.norm() / dir.norm()};
+  return MeetLine{x, d, u.norm() / dir.norm(), p_on_neg};
 }
 
 // True when one of `lines` (plan view) runs along the meet line: both ends
@@ -147,11 +150,11 @@ Ring2 CutAtConvexCrease(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis&
   const auto meet = BorderBetween(q.plane, q.patch, p.plane, p.patch, o.virtual_min_angle_deg,
                                   o.conflict_meet_max_across);
   if (!meet) return {};
-  // Signed plan distance from the meet line: a x + b y + c.
+  // Plan distance from the meet line, a x + b y + c; q keeps the side it
+  // mostly lies on, where the distance has the sign `side`.
   const double a = -meet->d.y(), b = meet->d.x(), c = -(a * meet->x.x() + b * meet->x.y());
-  Ring2 neg = ClipHalfPlane(q.patch, a, b, c), pos = ClipHalfPlane(q.patch, -a, -b, -c);
-  const double side = std::abs(SignedArea(neg)) >= std::abs(SignedArea(pos)) ? -1.0 : 1.0;
-  Ring2 cut = side < 0 ? std::move(neg) : std::move(pos);
+  const double side = meet->first_on_negative ? -1.0 : 1.0;
+  Ring2 cut = ClipHalfPlane(q.patch, -side * a, -side * b, -side * c);
   if (cut.size() < 3 || std::abs(SignedArea(cut)) <= 0) return {};
   auto on_side = [&](const std::vector<std::array<Eigen::Vector2d, 2>>& lines, double s) {
     for (const auto& l : lines)
@@ -343,8 +346,10 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
   std::vector<char> replaced(n, 0), promoted(n, 0);
   std::vector<Ring2> whole_patch(n);
   for (int k = 0; k < n; ++k) whole_patch[k] = p[k].patch;
-  for (bool again = true; again;) {
-    again = false;
+
+  // The greedy pass (§5), strongest first; a plane meeting a stronger one
+  // in a convex crease is cut back to its side (conflict_cut_at_crease).
+  auto decide_in_order = [&]() {
     std::fill(in.begin(), in.end(), 0);
     creases.clear();
     for (int k = 0; k < n; ++k) {
@@ -361,6 +366,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
       int with = -1;
       double overlap = 0;
       // A hipped end can meet a face at each of its two hips.
+      std::vector<std::pair<int, int>> met;
       for (int cuts = 0;; ++cuts) {
         with = -1;
         for (int j : order) {
@@ -374,19 +380,21 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         Ring2 cut = CutAtConvexCrease(p[k], p[with], overlap, o);
         if (cut.empty()) break;
         p[k].patch = std::move(cut);
-        creases.insert({std::min(k, with), std::max(k, with)});
+        met.emplace_back(std::min(k, with), std::max(k, with));
+        creases.insert(met.back());
       }
       if (with < 0) {
         in[k] = 1;
         continue;
       }
       p[k].patch = whole_patch[k];
-      for (auto it = creases.begin(); it != creases.end();)
-        it = it->first == k || it->second == k ? creases.erase(it) : std::next(it);
+      for (const auto& pair : met) creases.erase(pair);
       reason[k] = StrFormat("%s: overlaps the stronger %s by %.0f %% in plan view", p[k].id.c_str(),
                             p[with].id.c_str(), 100 * overlap);
     }
+  };
 
+  auto admit_derived = [&]() {
     // A derived face against small found planes (see
     // GroupingOptions::derived_displaces_fraction): it takes their place when
     // every kept plane it conflicts with is found and that small, or a
@@ -426,7 +434,11 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         changed = true;
       }
     }
+  };
 
+  // True when a plane was replaced that had not been before.
+  auto replace_by_several = [&]() {
+    bool fresh = false;
     // One strong plane against several: the greedy order compares pairs, so
     // a plane carried over two neighbouring faces (the north faces of two
     // terraced houses whose ridges differ by a metre) beats each by its
@@ -482,7 +494,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         if (o.conflict_redecide && !replaced[big]) {
           replaced[big] = 1;
           for (int q : chosen) promoted[q] = 1;
-          again = true;
+          fresh = true;
         }
         reason[big] = StrFormat(
             "%s: overlaps %zu planes that each fit the images better%s and together hold more "
@@ -492,6 +504,13 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         changed = true;
       }
     }
+    return fresh;
+  };
+
+  for (bool again = true; again;) {
+    decide_in_order();
+    admit_derived();
+    again = replace_by_several();
   }
 
   std::vector<std::string> rejected;
