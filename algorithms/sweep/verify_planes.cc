@@ -547,8 +547,15 @@ std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<
       for (const auto& q : patch) c += q, ++corners;
     }
     c /= static_cast<double>(corners);
-    const double z_mid = PlaneZ(m.planes[0], c.x(), c.y()) + 0.5 * (m.h_lo + m.h_hi);
-    const double k = ParallaxPerMetre(RelativeParallax(block, {c.x(), c.y(), z_mid}));
+    const double z0 = PlaneZ(m.planes[0], c.x(), c.y());
+    double k =
+        ParallaxPerMetre(RelativeParallax(block, {c.x(), c.y(), z0 + 0.5 * (m.h_lo + m.h_hi)}));
+    // The middle of a flat roof's window lies half the block's maximum
+    // building height up, and near the block's edge a point that high leaves
+    // all views but one: a garden shed there went without a roof. The
+    // parallax per metre changes little with height; at the window's
+    // bottom, nearest the ground, the most views see it.
+    if (!(k > 0)) k = ParallaxPerMetre(RelativeParallax(block, {c.x(), c.y(), z0 + m.h_lo}));
     if (!(k > 0)) return;
     // The coarse pass needs only the profile's peak: a quarter of the
     // samples find it as well at a quarter of the cost.

@@ -498,6 +498,29 @@ TEST(BestModelHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
   EXPECT_TRUE(v[0].accepted) << v[0].reason;
 }
 
+// A flat roof near the edge of the block, seen by the two eastern views
+// only. Halfway up the search window (1.5-60 m) a point over it leaves the
+// southern one; the search must not give up for that.
+TEST(BestModelHeights, FindsARoofNearTheBlocksEdge) {
+  TestScene scene;
+  Quad roof;
+  roof.origin = {20, 8, 4.3};
+  roof.u = {6, 0, 0};
+  roof.v = {0, 6, 0};
+  roof.seed = 9;
+  scene.quads = {roof};
+  const Block block = sweep_test::FourViewBlock();
+  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  ModelHeightSearch search;
+  search.patches = {{{20.5, 8.5}, {25.5, 8.5}, {25.5, 13.5}, {20.5, 13.5}}};
+  search.planes = {Eigen::Vector4d(0, 0, 1, 0)};
+  search.h_lo = 1.5;
+  search.h_hi = 60;
+  const std::vector<ModelHeight> m = BestModelHeights(block, images, {search}, VerifyOptions());
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_NEAR(m[0].h, 4.3, 0.15);
+}
+
 // A shed roof, 8 x 6 m in plan, rising at 15° from its eaves at z = 4 (y =
 // 0): the shed model finds the eaves' height and fits the images better
 // than the flat roof at its best height, which the footprint models rely on
