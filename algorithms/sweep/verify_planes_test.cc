@@ -463,17 +463,24 @@ TEST(VerifyPlanes, FlatPlaneOfThreeLinesIsTakenFromThemOnATie) {
   EXPECT_FALSE(w[0].accepted);
 }
 
-TEST(BestModelHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
-  // A flat textured roof, 8 x 6 m, at z = 4.3 over the textured ground.
+// The views of FourViewBlock over one flat textured roof, w x d m from its
+// south-west corner `origin`, over the textured ground.
+std::vector<cv::Mat> FlatRoofImages(const Block& block, const Eigen::Vector3d& origin, double w,
+                                    double d, int seed) {
   TestScene scene;
   Quad roof;
-  roof.origin = {-4, 0, 4.3};
-  roof.u = {8, 0, 0};
-  roof.v = {0, 6, 0};
-  roof.seed = 7;
+  roof.origin = origin;
+  roof.u = {w, 0, 0};
+  roof.v = {0, d, 0};
+  roof.seed = seed;
   scene.quads = {roof};
+  return sweep_test::RenderAll(scene, block);
+}
+
+TEST(BestModelHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
+  // A flat roof, 8 x 6 m, at z = 4.3.
   const Block block = sweep_test::FourViewBlock();
-  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  const std::vector<cv::Mat> images = FlatRoofImages(block, {-4, 0, 4.3}, 8, 6, 7);
   ModelHeightSearch over_roof;
   over_roof.patches = {{{-3.5, 0.5}, {3.5, 0.5}, {3.5, 5.5}, {-3.5, 5.5}}};
   over_roof.planes = {Eigen::Vector4d(0, 0, 1, 0)};
@@ -502,15 +509,8 @@ TEST(BestModelHeights, FindsAFlatRoofAndNothingWhereNoneCanBeScored) {
 // only. Halfway up the search window (1.5-60 m) a point over it leaves the
 // southern one; the search must not give up for that.
 TEST(BestModelHeights, FindsARoofNearTheBlocksEdge) {
-  TestScene scene;
-  Quad roof;
-  roof.origin = {20, 8, 4.3};
-  roof.u = {6, 0, 0};
-  roof.v = {0, 6, 0};
-  roof.seed = 9;
-  scene.quads = {roof};
   const Block block = sweep_test::FourViewBlock();
-  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
+  const std::vector<cv::Mat> images = FlatRoofImages(block, {20, 8, 4.3}, 6, 6, 9);
   ModelHeightSearch search;
   search.patches = {{{20.5, 8.5}, {25.5, 8.5}, {25.5, 13.5}, {20.5, 13.5}}};
   search.planes = {Eigen::Vector4d(0, 0, 1, 0)};
