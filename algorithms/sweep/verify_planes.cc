@@ -738,9 +738,10 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     // the plane is seen, not the overshoot past its eaves, which is ground.
     Ring2 trimmed;
     if (v.reason.empty() && o.trim_patch) trimmed = TrimmedPatch(p.patch, grid, at, p.lines_xy, o);
-    if (v.reason.empty() && !height_fails && o.ground_alternative && block.ground.Known()) {
+    if (v.reason.empty() && (!height_fails || o.ground_on_lines) && o.ground_alternative &&
+        block.ground.Known()) {
       const double zg = block.ground.HeightAt(c.x(), c.y());
-      if (std::isfinite(zg) && zc - zg > 2 * v.offset_m) {
+      if (std::isfinite(zg) && zc - zg > o.ground_min_offsets * v.offset_m) {
         // The ground under the patch, sloping as the DTM does across it.
         const Ring2& seen = trimmed.size() >= 3 ? trimmed : p.patch;
         double radius = 0;

@@ -593,6 +593,30 @@ TEST(VerifyPlanes, PlaneSpanningTwoLinesOverTheGroundIsRefused) {
   EXPECT_TRUE(a[0].accepted) << a[0].reason;
 }
 
+// Mowing stripes across x, `period_m` apart, on the known ground (z = 0)
+// of FourViewBlock, with `quads` over them, rendered in every view.
+struct StripedGround {
+  Block block = sweep_test::FourViewBlock();
+  std::vector<cv::Mat> images;
+};
+StripedGround Stripes(double period_m, std::vector<Quad> quads = {}) {
+  TestScene scene;
+  scene.ground_stripes_m = period_m;
+  scene.quads = std::move(quads);
+  StripedGround g;
+  g.block.ground.height = 0.0;
+  g.images = sweep_test::RenderAll(scene, g.block);
+  return g;
+}
+
+// A flat plane `h` up over the stripes, away from Face.
+RoofPlaneHypothesis FlatOverStripes(double h) {
+  RoofPlaneHypothesis p;
+  p.plane << 0, 0, 1, -h;
+  p.patch = {{-14, -14}, {-7, -14}, {-7, -8}, {-14, -8}};
+  return p;
+}
+
 // Mowing stripes across x, 1 m apart. The x baselines (24 m) shift the
 // ground seen through a flat plane 19.8 m up by 24 * 19.8 / 80.2 = 5.92 m,
 // nearly six whole stripes, so the views agree there almost as well as on
@@ -603,15 +627,8 @@ TEST(VerifyPlanes, PlaneSpanningTwoLinesOverTheGroundIsRefused) {
 // true roof over that ground keeps its place: its texture, carried down
 // to the ground, decorrelates (0.22 against 0.99).
 TEST(VerifyPlanes, PlaneOverRepeatingGroundTextureIsRefusedWhenTheGroundExplainsIt) {
-  TestScene scene;
-  scene.ground_stripes_m = 1.0;
-  scene.quads = {Face(true)};
-  Block block = sweep_test::FourViewBlock();
-  block.ground.height = 0.0;
-  const std::vector<cv::Mat> images = sweep_test::RenderAll(scene, block);
-  RoofPlaneHypothesis stripes;
-  stripes.plane << 0, 0, 1, -19.8;
-  stripes.patch = {{-14, -14}, {-7, -14}, {-7, -8}, {-14, -8}};  // away from the face
+  const auto [block, images] = Stripes(1.0, {Face(true)});
+  const RoofPlaneHypothesis stripes = FlatOverStripes(19.8);
   const RoofPlaneHypothesis roof = Hypothesis(Face(true));
   NullProgress progress;
   const auto v = VerifyPlanes(block, images, {stripes, roof}, VerifyOptions(), progress);
@@ -629,6 +646,57 @@ TEST(VerifyPlanes, PlaneOverRepeatingGroundTextureIsRefusedWhenTheGroundExplains
   ASSERT_EQ(w.size(), 1u);
   EXPECT_TRUE(w[0].accepted) << w[0].reason;
   EXPECT_TRUE(std::isnan(w[0].score_ground));
+}
+
+// `p` over `g` is refused as the ground under `with`, and accepted under
+// `without` (which tries no ground for it): the one it returns.
+PlaneVerification RefusedAsTheGroundOnlyWith(const StripedGround& g, const RoofPlaneHypothesis& p,
+                                             const VerifyOptions& with,
+                                             const VerifyOptions& without) {
+  NullProgress progress;
+  const auto v = VerifyPlanes(g.block, g.images, {p}, with, progress);
+  EXPECT_EQ(v.size(), 1u);
+  EXPECT_FALSE(v.at(0).accepted);
+  EXPECT_EQ(v.at(0).reason.rfind("the ground explains the images as well", 0), 0u)
+      << v.at(0).reason;
+  const auto w = VerifyPlanes(g.block, g.images, {p}, without, progress);
+  EXPECT_EQ(w.size(), 1u);
+  EXPECT_TRUE(w.at(0).accepted) << w.at(0).reason;
+  EXPECT_TRUE(std::isnan(w.at(0).score_ground));
+  return w.at(0);
+}
+
+// Stripes 0.75 m apart alias one period over the 24 m baselines through a
+// flat plane 3.03 m up (24 * 3.03 / 96.97 = 0.75 m). The height test's
+// offset there is about 2 m, so the plane lies between one and two offsets
+// above the ground: under the old bound (two offsets) the ground was not
+// tried and the plane passed. Oblique views see lawns where the offset
+// grows to 2-2.5 m, and false flat faces piled up just below that bound.
+TEST(VerifyPlanes, PlaneLessThanTwoOffsetsOverRepeatingGroundIsRefused) {
+  const double h = 100 * 0.75 / (24 + 0.75);
+  VerifyOptions two;
+  two.ground_min_offsets = 2.0;
+  const PlaneVerification w =
+      RefusedAsTheGroundOnlyWith(Stripes(0.75), FlatOverStripes(h), VerifyOptions(), two);
+  EXPECT_GT(h, w.offset_m);
+  EXPECT_LT(h, 2 * w.offset_m);
+}
+
+// A plane accepted on its lines (here on the three lines drawing its
+// outline, the height test made to fail for every plane) was not tried
+// against the ground; over the lawns that only oblique views see, such
+// planes scored 0.31-0.37 and the ground 0.77-0.83 on the same samples.
+// They are tried now, and the stripes' plane goes.
+TEST(VerifyPlanes, PlaneAcceptedOnItsLinesIsAlsoTriedAgainstTheGround) {
+  RoofPlaneHypothesis stripes = FlatOverStripes(19.8);  // six stripes of shift, as above
+  stripes.lines_xy = {{Eigen::Vector2d(-14, -14), Eigen::Vector2d(-7, -14)},
+                      {Eigen::Vector2d(-7, -14), Eigen::Vector2d(-7, -8)},
+                      {Eigen::Vector2d(-7, -8), Eigen::Vector2d(-14, -8)}};
+  VerifyOptions o;
+  o.min_margin = 1.0;  // no plane passes the height test
+  VerifyOptions not_on_lines = o;
+  not_on_lines.ground_on_lines = false;
+  EXPECT_FALSE(RefusedAsTheGroundOnlyWith(Stripes(1.0), stripes, o, not_on_lines).height_confirmed);
 }
 
 }  // namespace
