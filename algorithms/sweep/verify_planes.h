@@ -195,8 +195,8 @@ struct VerifyOptions {
   double off_line_min_drop = 0.15;
   // The ground as one more alternative height. A plane lying more than
   // ground_min_offsets offsets above the block's ground at its patch
-  // centre is refused when the ground explains the
-  // same image evidence better: the samples inside its trimmed patch,
+  // centre is refused when the ground explains the same image evidence
+  // better: the samples inside its trimmed patch,
   // carried along the reference view's rays down to the ground, score
   // there more than the plane's score on them minus ground_margin.
   // Ground texture with a period (mowing stripes, parking bays, dashed
@@ -220,8 +220,8 @@ struct VerifyOptions {
   double ground_min_offsets = 1.0;
   // Planes accepted on their lines (height_from_crossing_lines,
   // height_from_outline, flat_from_lines) are tried too: the images could
-  // not tell their height from the offset, but the ground is several
-  // offsets away. Over those lawns they scored 0.31-0.37 against
+  // not tell their height within one offset, but the ground lies further
+  // down than that. Over those lawns they scored 0.31-0.37 against
   // 0.77-0.83 on the ground; true roofs so accepted scored 0.20-0.45 there,
   // below their own score.
   bool ground_on_lines = true;
