@@ -14,7 +14,10 @@
 # BLOCKS       simulated blocks, PRESET-SEED, berlin-SEED, slope-SEED (the
 #              realistic preset on an 8 % slope falling towards azimuth
 #              47 x SEED mod 360, with a DTM) or hills-SEED (the realistic
-#              preset over hills spanning up to 12 m, with a DTM) (default:
+#              preset over hills spanning up to 12 m, with a DTM),
+#              obliques-SEED (the realistic preset with four oblique views
+#              beside each nadir one: 40 views, about 5 GB per run) or
+#              gsd10-SEED (the realistic preset at 10 cm GSD) (default:
 #              the ten below);
 #              simulated once into OUTDIR/blocks
 # MATCH_SEEDS  matching seeds (default "1 2 3"); the lines are matched once
@@ -58,6 +61,10 @@ simulate() {
       -terrain_aspect $((47 * seed % 360)) -o "$OUT/blocks/$name" -q
   elif [[ $preset == hills ]]; then
     "$RS_A" simulate -preset realistic -seed "$seed" -terrain_relief 12 -o "$OUT/blocks/$name" -q
+  elif [[ $preset == obliques ]]; then
+    "$RS_A" simulate -preset realistic -seed "$seed" -obliques -o "$OUT/blocks/$name" -q
+  elif [[ $preset == gsd10 ]]; then
+    "$RS_A" simulate -preset realistic -seed "$seed" -gsd 0.10 -o "$OUT/blocks/$name" -q
   else
     "$RS_A" simulate -preset "$preset" -seed "$seed" -o "$OUT/blocks/$name" -q
   fi
