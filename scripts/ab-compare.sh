@@ -78,7 +78,8 @@ printf '%s\0' "${BLOCK_LIST[@]}" | xargs -0 -P "$JOBS" -n 1 bash -c 'simulate "$
 # comparison does not reuse half a file.
 # PROGRAM LINES_DIR ARGS BLOCK SEED
 match_job() {
-  local rs=$1 dir=$2 args=$3 b=$4 s=$5 f="$2/$4-s$5.gpkg"
+  local rs=$1 dir=$2 args=$3 b=$4 s=$5
+  local f="$dir/$b-s$s.gpkg"
   [[ -f $f ]] && return
   # shellcheck disable=SC2086 # ARGS are options, split on purpose
   "$rs" match "$OUT/blocks/$b" -seed "$s" $args -o "$f.tmp.gpkg" -overwrite -q
