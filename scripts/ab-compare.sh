@@ -50,24 +50,21 @@ mkdir -p "$OUT/blocks" "$OUT/lines" "$OUT/$LABEL_A" "$OUT/$LABEL_B"
 export OUT SHARED
 
 simulate() {
-  local name=$1 preset=${1%-*} seed=${1##*-}
+  local name=$1 preset=${1%-*} seed=${1##*-} extra=()
   [[ -f "$OUT/blocks/$name/block.json" ]] && return
-  if [[ $preset == berlin ]]; then
-    "$RS_A" simulate -preset realistic -seed "$seed" \
-      -citygml "$SHARED/data/citygml/berlin-lod2/3910_5819.gml" \
-      -aoi 391760,5818980,391900,5819110 -o "$OUT/blocks/$name" -q
-  elif [[ $preset == slope ]]; then
-    "$RS_A" simulate -preset realistic -seed "$seed" -terrain_slope 8 \
-      -terrain_aspect $((47 * seed % 360)) -o "$OUT/blocks/$name" -q
-  elif [[ $preset == hills ]]; then
-    "$RS_A" simulate -preset realistic -seed "$seed" -terrain_relief 12 -o "$OUT/blocks/$name" -q
-  elif [[ $preset == obliques ]]; then
-    "$RS_A" simulate -preset realistic -seed "$seed" -obliques -o "$OUT/blocks/$name" -q
-  elif [[ $preset == gsd10 ]]; then
-    "$RS_A" simulate -preset realistic -seed "$seed" -gsd 0.10 -o "$OUT/blocks/$name" -q
-  else
-    "$RS_A" simulate -preset "$preset" -seed "$seed" -o "$OUT/blocks/$name" -q
-  fi
+  # The kinds of block beside the presets: the realistic preset and what
+  # makes each different.
+  case $preset in
+    berlin)
+      extra=(-citygml "$SHARED/data/citygml/berlin-lod2/3910_5819.gml"
+        -aoi "391760,5818980,391900,5819110") ;;
+    slope) extra=(-terrain_slope 8 -terrain_aspect $((47 * seed % 360))) ;;
+    hills) extra=(-terrain_relief 12) ;;
+    obliques) extra=(-obliques) ;;
+    gsd10) extra=(-gsd 0.10) ;;
+  esac
+  if [[ ${#extra[@]} -gt 0 ]]; then preset=realistic; fi
+  "$RS_A" simulate -preset "$preset" -seed "$seed" "${extra[@]}" -o "$OUT/blocks/$name" -q
 }
 export -f simulate
 export RS_A
