@@ -16,9 +16,11 @@
 #              47 x SEED mod 360, with a DTM) or hills-SEED (the realistic
 #              preset over hills spanning up to 12 m, with a DTM),
 #              obliques-SEED (the realistic preset with four oblique views
-#              beside each nadir one: 40 views, about 5 GB per run) or
-#              gsd10-SEED (the realistic preset at 10 cm GSD) (default:
-#              the ten below);
+#              beside each nadir one: 40 views, about 5 GB per run),
+#              gsd10-SEED (the realistic preset at 10 cm GSD) or
+#              overlap60-SEED (the realistic preset flown 60 / 30 %: most
+#              ground in two or three views of one strip) (default: the ten
+#              below);
 #              simulated once into OUTDIR/blocks
 # MATCH_SEEDS  matching seeds (default "1 2 3"); the lines are matched once
 #              per block and seed by RS_A into OUTDIR/lines, and both sides
@@ -62,6 +64,7 @@ simulate() {
     hills) extra=(-terrain_relief 12) ;;
     obliques) extra=(-obliques) ;;
     gsd10) extra=(-gsd 0.10) ;;
+    overlap60) extra=(-overlap "60,30") ;;
   esac
   if [[ ${#extra[@]} -gt 0 ]]; then preset=realistic; fi
   "$RS_A" simulate -preset "$preset" -seed "$seed" "${extra[@]}" -o "$OUT/blocks/$name" -q

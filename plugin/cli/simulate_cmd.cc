@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -12,7 +13,7 @@ namespace {
 int Simulate(const std::vector<std::string>& args, Context& ctx) {
   SimulateRequest r;
   int seed = 1;
-  std::string origin, aoi;
+  std::string origin, aoi, overlap;
   std::string presets;
   for (const auto& p : sim::SimulationPresetNames()) presets += (presets.empty() ? "" : ", ") + p;
   ArgParser p(
@@ -45,6 +46,10 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
               "focal length in pixels)")
       .Option("-buildings", &r.buildings, "N", "number of generated buildings (preset)")
       .Flag("-obliques", &r.obliques, "add oblique views (forward, backward, left, right)")
+      .Option(
+          "-overlap", &overlap, "FORWARD,SIDE",
+          "forward and side overlap of the nadir images in percent (preset: 80,60, hard 60,25); "
+          "60,30 is the classic mapping flight")
       .Option("-terrain_slope", &r.terrain_slope_percent, "PERCENT",
               "the ground falls by this much per 100 m (0: flat); each building stands on the "
               "lowest ground under it, and the block gets a DTM (dtm.tif) instead of one ground "
@@ -74,6 +79,17 @@ int Simulate(const std::vector<std::string>& args, Context& ctx) {
     r.origin = Eigen::Vector3d(e, n, h);
   }
   if (!aoi.empty()) r.aoi = ParseAoi(p, aoi);
+  if (!overlap.empty()) {
+    double f, s;
+    char tail;
+    if (std::sscanf(overlap.c_str(), "%lf,%lf%c", &f, &s, &tail) != 2 || !std::isfinite(f) ||
+        !std::isfinite(s) || f < 0 || s < 0) {
+      throw UsageError("Option -overlap expects FORWARD,SIDE in percent, got '" + overlap + "'",
+                       p.Synopsis());
+    }
+    r.forward_overlap = f / 100;
+    r.side_overlap = s / 100;
+  }
   const SimulateSummary s = RunSimulate(r, *ctx.progress);
   if (!ctx.quiet) {
     std::printf(

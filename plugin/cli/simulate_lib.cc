@@ -150,6 +150,17 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
   if (r.gsd > 0) o.cameras.gsd = r.gsd;
   if (r.buildings >= 0) o.scene.building_count = r.buildings;
   if (r.obliques) o.cameras.obliques = true;
+  if (r.forward_overlap >= 0) {
+    // Below a half, part of each image lies in no neighbour: a strip no
+    // longer sees all its ground in stereo. Near 1 the baseline vanishes.
+    if (!(r.forward_overlap >= 0.5 && r.forward_overlap < 0.95))
+      throw Error("simulate: the forward overlap must be 50..95 %");
+    o.cameras.forward_overlap = r.forward_overlap;
+  }
+  if (r.side_overlap >= 0) {
+    if (!(r.side_overlap < 0.95)) throw Error("simulate: the side overlap must be 0..95 %");
+    o.cameras.side_overlap = r.side_overlap;
+  }
   if (!std::isfinite(r.terrain_slope_percent) || !std::isfinite(r.terrain_aspect_deg) ||
       r.terrain_slope_percent < 0 || r.terrain_slope_percent > 50)
     throw Error("simulate: the terrain slope must be 0..50 %");
@@ -323,6 +334,8 @@ SimulateSummary RunSimulate(const SimulateRequest& r, Progress& progress) {
       {"views", s.views},
       {"image_size", {cam.width, cam.height}},
       {"gsd_m", s.gsd_m},
+      {"forward_overlap", o.cameras.forward_overlap},
+      {"side_overlap", o.cameras.side_overlap},
       {"buildings", s.buildings},
       {"roof_planes", s.roof_planes},
       {"edges", s.edges},

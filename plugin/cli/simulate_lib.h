@@ -33,6 +33,11 @@ struct SimulateRequest {
   double gsd = 0;
   int buildings = -1;
   bool obliques = false;
+  // Forward and side overlap of the nadir images, fractions (negative: the
+  // preset's, 80 / 60 %). 60 / 30 % is the classic mapping flight: most
+  // ground seen in two or three images of one strip.
+  double forward_overlap = -1;
+  double side_overlap = -1;
   // Terrain: a plane falling by terrain_slope_percent towards the azimuth
   // terrain_aspect_deg (clockwise from the local north, as a GIS aspect).
   // Not 0: the block gets a DTM (dtm.tif) instead of one ground height.

@@ -56,6 +56,25 @@ test_simulate_is_deterministic() {
   fi
 }
 
+# -overlap sets the nadir layout: consecutive images of a strip lie
+# (1 - forward) image lengths apart, the strips (1 - side) image widths.
+test_simulate_overlap() {
+  expect_ok simulate_overlap simulate -preset easy -seed 5 -size 512 -gsd 0.15 -strips 2 -views 3 -buildings 4 \
+    -overlap 60,30 -o "$WORK/ov" -q || return
+  python3 -c "
+import json,sys,math
+sim=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2]))
+assert abs(sim['forward_overlap']-0.6)<1e-12 and abs(sim['side_overlap']-0.3)<1e-12, sim
+side=512*0.15
+pos={i['name']:i['position'] for i in b['images']}
+along=math.dist(pos['s01_i001'][:2],pos['s01_i002'][:2])
+across=math.dist(pos['s01_i001'][:2],pos['s02_i003'][:2])
+# positions carry 0.5 m of simulated GNSS noise
+assert abs(along-0.4*side)<2.5, (along, 0.4*side)
+assert abs(across-0.7*side)<2.5, (across, 0.7*side)" "$WORK/ov/simulation.json" "$WORK/ov/block.json" 2>"$WORK/py.txt" \
+    && pass overlap_sets_the_layout || fail overlap_sets_the_layout "$(tail -3 "$WORK/py.txt")"
+}
+
 test_groundtruth_validates_against_citygml_xsd() {
   small_block || return
   local xsd
@@ -167,6 +186,8 @@ test_bad_input() {
   expect_fail slope_on_citygml "$WORK/c" "needs a generated town" -- simulate -citygml "$WORK/nope.gml" -terrain_slope 5 -o "$WORK/c"
   expect_fail negative_relief "$WORK/r" "terrain relief must be 0..50 m" -- simulate -preset easy -terrain_relief -3 -o "$WORK/r"
   expect_fail relief_on_citygml "$WORK/c" "needs a generated town" -- simulate -citygml "$WORK/nope.gml" -terrain_relief 5 -o "$WORK/c"
+  expect_fail low_forward_overlap "$WORK/o" "forward overlap must be 50..95 %" -- simulate -preset easy -overlap 40,30 -o "$WORK/o"
+  expect_fail overlap_one_value "$WORK/o" "FORWARD,SIDE" -- simulate -preset easy -overlap 60 -o "$WORK/o"
   small_block || return
   expect_fail existing_folder "" "exists" -- simulate -preset easy -o "$SIM"
   expect_fail eval_missing_truth "" "nothere" -- eval "$SIM/groundtruth.gml" "$WORK/nothere.gml"
