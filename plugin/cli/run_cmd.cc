@@ -121,6 +121,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Option("-min_edge_support", &r.min_edge_support, "F",
               "drop buildings with less than this share of their visible roof-edge length on an "
               "image edge (attribute edge_support; default 0: keep all)")
+      .Option("-min_edge_support_unlined", &r.min_edge_support_unlined, "F",
+              "... and those whose roof no 3D line supports (roof models over bare footprints) "
+              "below this share (default 0.5: over a shed hidden under a tree the views agree "
+              "on the crown, whose outline is no image edge; 0 keeps all)")
       .Flag("-no_lod1", &no_lod1,
             "with footprints, leave out a footprint whose roof was not reconstructed (with its "
             "reason) instead of writing an LoD1 block over it at the height of the 3D lines "
@@ -142,6 +146,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
   if (!(r.min_edge_support >= 0 && r.min_edge_support <= 1))
     throw UsageError("Option -min_edge_support expects a share from 0 to 1", p.Synopsis());
+  if (!(r.min_edge_support_unlined >= 0 && r.min_edge_support_unlined <= 1))
+    throw UsageError("Option -min_edge_support_unlined expects a share from 0 to 1", p.Synopsis());
   r.line_planes = !sweep_only;
   r.drop_eave_planes = !keep_eave_planes;
   r.mirror_faces = !no_mirror;

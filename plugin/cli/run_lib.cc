@@ -195,7 +195,8 @@ void WriteReport(const std::string& path, const RunSummary& s) {
 }
 
 // Sets each building's edge_support (BuildingEdgeSupport) and drops those
-// below r.min_edge_support, with the reason in assembled->rejected, also
+// below r.min_edge_support (r.min_edge_support_unlined when no 3D line
+// supports its roof), with the reason in assembled->rejected, also
 // for their planes (the -planes layer tells them as not built) and their
 // footprint (footprint_rejection). Returns the stage's result line.
 std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& images,
@@ -210,12 +211,17 @@ std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& ima
     const double f = support[i].Fraction();
     if (std::isfinite(f)) {
       b.double_attributes["edge_support"] = f;
-      if (f < r.min_edge_support) {
+      const auto lines = b.double_attributes.find("supporting_lines");
+      const bool unlined = lines != b.double_attributes.end() && lines->second == 0;
+      const double min =
+          unlined ? std::max(r.min_edge_support, r.min_edge_support_unlined) : r.min_edge_support;
+      if (f < min) {
         // With footprints every reason is the footprint's, as the
         // assembly's are.
         const auto fp = b.string_attributes.find("footprint_id");
-        const std::string reason =
-            StrFormat("roof edges on image edges %.2f < %.2f", f, r.min_edge_support);
+        const std::string reason = StrFormat(
+            "roof edges on image edges %.2f < %.2f%s", f, min,
+            unlined && min > r.min_edge_support ? ", and no 3D line supports its roof" : "");
         const std::string why = (fp != b.string_attributes.end()
                                      ? "footprint " + fp->second + " (building " + b.id + ")"
                                      : "building " + b.id) +

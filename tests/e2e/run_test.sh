@@ -316,6 +316,33 @@ assert [x for x in rows if x[1] and "roof edges on image edges" in x[1]], rows
     || fail run_min_edge_support_drops "buildings kept or no reason"
 }
 
+# A roof no 3D line supports (a roof model over a bare footprint) must show
+# min_edge_support_unlined of its outline as image edges: at 1 every such
+# building goes, with its reason, and those built on lines stay; at the
+# default the models' roofs on this block (97 % on edges) stay.
+test_run_drops_unlined_roofs_the_images_do_not_show() {
+  small_block || return
+  expect_ok run_unlined_lines match "$SIM" -o "$WORK/ul.gpkg" -q || return
+  expect_ok run_unlined run "$SIM" -lines "$WORK/ul.gpkg" -footprints "$SIM/footprints.gpkg" \
+    -min_edge_support_unlined 1 -o "$WORK/ul.gml" -report "$WORK/ul.json" -q || return
+  expect_ok run_unlined_default run "$SIM" -lines "$WORK/ul.gpkg" \
+    -footprints "$SIM/footprints.gpkg" -o "$WORK/ud.gml" -report "$WORK/ud.json" -q || return
+  python3 - "$WORK/ul.json" "$WORK/ul.gml" "$WORK/ud.json" "$WORK/ud.gml" <<'PY' 2>"$WORK/py.txt" \
+    && pass run_unlined_roofs_dropped || fail run_unlined_roofs_dropped "$(tail -1 "$WORK/py.txt")"
+import json, re, sys
+def buildings(gml):
+    t = open(gml).read()
+    return re.findall(r'name="supporting_lines">\s*<gen:value>([0-9.]+)<', t)
+dropped = [r for r in json.load(open(sys.argv[1]))["rejected"]
+           if "no 3D line supports its roof" in r]
+kept, default = buildings(sys.argv[2]), buildings(sys.argv[4])
+assert dropped, "no unlined roof dropped"
+assert kept and all(float(x) > 0 for x in kept), kept
+assert len(default) == len(kept) + len(dropped), (default, kept, dropped)
+assert not [r for r in json.load(open(sys.argv[3]))["rejected"] if "image edges" in r]
+PY
+}
+
 # With footprints, a footprint whose roof is not reconstructed gets an LoD1
 # block at the height of the 3D lines over it: here every LoD2 building is
 # dropped (no roof outline lies wholly on image edges), so the footprints
@@ -586,6 +613,8 @@ test_run_refuses_bad_input() {
   expect_fail run_exists "" "exists.*-overwrite" -- run "$SIM" -o "$WORK/exists.gml"
   expect_fail run_bad_min_edge_support "$WORK/z.gml" "min_edge_support" -- run "$SIM" -o "$WORK/z.gml" \
     -min_edge_support 1.5
+  expect_fail run_bad_min_edge_support_unlined "$WORK/z.gml" "min_edge_support_unlined" -- run "$SIM" \
+    -o "$WORK/z.gml" -min_edge_support_unlined -0.1
   expect_fail run_no_block "$WORK/x.gml" "nope" -- run "$WORK/nope" -o "$WORK/x.gml"
   expect_fail run_bad_format "$WORK/x.abc" "format|extension" -- run "$SIM" -o "$WORK/x.abc"
   # Images that would not fit in memory are refused before they are read,
