@@ -138,6 +138,7 @@ figures = [
     ("plane correctness", lambda d: d["roof_planes"]["correctness"], 100),
     ("vertices within 2 GSD", lambda d: d["geometry"]["vertex_within_2gsd"], 100),
     ("vertex RMS (GSD)", lambda d: d["geometry"]["vertex_rms_gsd"], 1),
+    ("RMSZ (m)", lambda d: d["geometry"].get("rmsz_m"), 1),
     ("building quality", lambda d: d["buildings"]["quality"], 100),
 ]
 for mode in ("matched", "footprints"):
