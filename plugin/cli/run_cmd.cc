@@ -122,9 +122,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
               "drop buildings with less than this share of their visible roof-edge length on an "
               "image edge (attribute edge_support; default 0: keep all)")
       .Option("-min_edge_support_unlined", &r.min_edge_support_unlined, "F",
-              "... and those whose roof no 3D line supports (roof models over bare footprints) "
-              "below this share (default 0.5: over a shed hidden under a tree the views agree "
-              "on the crown, whose outline is no image edge; 0 keeps all)")
+              "drop buildings whose roof no 3D line supports (roof models over bare footprints) "
+              "with less than this share of their roof-edge length on an image edge (default 0.5: "
+              "over a shed hidden under a tree the views agree on the crown, whose outline is no "
+              "image edge; 0 keeps all)")
       .Flag("-no_lod1", &no_lod1,
             "with footprints, leave out a footprint whose roof was not reconstructed (with its "
             "reason) instead of writing an LoD1 block over it at the height of the 3D lines "
