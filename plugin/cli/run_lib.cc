@@ -221,7 +221,7 @@ std::string ApplyEdgeSupport(const Block& block, const std::vector<cv::Mat>& ima
         const auto fp = b.string_attributes.find("footprint_id");
         const std::string reason = StrFormat(
             "roof edges on image edges %.2f < %.2f%s", f, min,
-            unlined && min > r.min_edge_support ? ", and no 3D line supports its roof" : "");
+            unlined && min > r.min_edge_support ? ", and no matched line supports its roof" : "");
         const std::string why = (fp != b.string_attributes.end()
                                      ? "footprint " + fp->second + " (building " + b.id + ")"
                                      : "building " + b.id) +

@@ -334,7 +334,7 @@ def buildings(gml):
     t = open(gml).read()
     return re.findall(r'name="supporting_lines">\s*<gen:value>([0-9.]+)<', t)
 dropped = [r for r in json.load(open(sys.argv[1]))["rejected"]
-           if "no 3D line supports its roof" in r]
+           if "no matched line supports its roof" in r]
 kept, default = buildings(sys.argv[2]), buildings(sys.argv[4])
 assert dropped, "no unlined roof dropped"
 assert kept and all(float(x) > 0 for x in kept), kept
