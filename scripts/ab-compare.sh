@@ -140,6 +140,9 @@ figures = [
     ("vertex RMS (GSD)", lambda d: d["geometry"]["vertex_rms_gsd"], 1),
     ("RMSZ (m)", lambda d: d["geometry"].get("rmsz_m"), 1),
     ("building quality", lambda d: d["buildings"]["quality"], 100),
+    ("building roof tops within 2 m", lambda d: d["buildings"]["top_compared"] and
+     (d["buildings"]["top_compared"] - d["buildings"]["top_off"]) / d["buildings"]["top_compared"]
+     if "top_compared" in d["buildings"] else None, 100),
 ]
 for mode in ("matched", "footprints"):
     print("\n%s (%s): %s against %s, %d blocks x seeds %s" % (

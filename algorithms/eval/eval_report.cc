@@ -140,6 +140,13 @@ std::string FormatTable(const EvalResult& r) {
   t.Row("completeness", Pct(b.completeness), Of(b.tp_reference, b.n_reference) + " reference");
   t.Row("correctness", Pct(b.correctness), Of(b.tp_result, b.n_result) + " result");
   t.Row("quality", Pct(b.quality));
+  t.Row(
+      "roof top within " + Fmt(r.options.building_top_tolerance_m, "%.1f m"),
+      Pct(b.top_compared > 0 ? std::optional<double>(
+                                   static_cast<double>(b.top_compared - b.top_off) / b.top_compared)
+                             : std::nullopt),
+      Of(b.top_compared - b.top_off, b.top_compared) + " found, " +
+          (b.top_rms_m ? "RMS " + Fmt(*b.top_rms_m, "%.2f m") : std::string("RMS n/a")));
   t.Row("roof type agreement", Pct(b.roof_type_agreement),
         Of(b.roof_type_same, b.roof_type_compared) + " with known type");
   for (const auto& [codes, n] : RoofTypeMistakes(b))
@@ -224,6 +231,9 @@ nlohmann::json ToJson(const EvalResult& r) {
                     {"n_result", b.n_result},
                     {"tp_reference", b.tp_reference},
                     {"tp_result", b.tp_result},
+                    {"top_compared", b.top_compared},
+                    {"top_off", b.top_off},
+                    {"top_rms_m", Num(b.top_rms_m)},
                     {"roof_type_agreement", Num(b.roof_type_agreement)},
                     {"roof_type_compared", b.roof_type_compared},
                     {"roof_type_same", b.roof_type_same},

@@ -160,6 +160,8 @@ void CheckOptions(const EvalOptions& o) {
   if (!(o.max_normal_angle_deg >= 0 && o.max_normal_angle_deg <= 90))
     throw Error("evaluation option max_normal_angle_deg must be in [0, 90]");
   if (!(o.rmsz_grid_m > 0)) throw Error("evaluation option rmsz_grid_m must be positive");
+  if (!(o.building_top_tolerance_m >= 0))
+    throw Error("evaluation option building_top_tolerance_m must be >= 0");
   if (!(o.gsd_m >= 0)) throw Error("evaluation option gsd_m must be >= 0");
   if (!(o.large_plane_m2 >= 0) || !std::isfinite(o.large_plane_m2))
     throw Error("evaluation option large_plane_m2 must be >= 0");
@@ -365,15 +367,24 @@ void ScoreBuildings(const CityModel& result, const CityModel& truth, const EvalO
   s.completeness = Ratio(mt.tp, s.n_reference);
   s.correctness = Ratio(mr.tp, s.n_result);
   s.quality = Ratio(mt.tp, s.n_reference + s.n_result - mr.tp);
+  double top_sq = 0;
   for (int j = 0; j < s.n_reference; ++j) {
     out->reference_building_matched.push_back(mt.best[j] >= 0);
-    if (mt.best[j] < 0 || truth.buildings[j].roof_type == roof_type::kUnknown) continue;
+    if (mt.best[j] < 0) continue;
+    const double dz = result.buildings[mt.best[j]].RoofTopZ() - truth.buildings[j].RoofTopZ();
+    if (std::isfinite(dz)) {
+      ++s.top_compared;
+      s.top_off += std::abs(dz) > o.building_top_tolerance_m;
+      top_sq += dz * dz;
+    }
+    if (truth.buildings[j].roof_type == roof_type::kUnknown) continue;
     ++s.roof_type_compared;
     s.roof_type_same += result.buildings[mt.best[j]].roof_type == truth.buildings[j].roof_type;
     ++s.roof_type_pairs[{truth.buildings[j].roof_type, result.buildings[mt.best[j]].roof_type}];
   }
   for (int i = 0; i < s.n_result; ++i) out->result_building_matched.push_back(mr.best[i] >= 0);
   s.roof_type_agreement = Ratio(s.roof_type_same, s.roof_type_compared);
+  if (s.top_compared > 0) s.top_rms_m = std::sqrt(top_sq / s.top_compared);
 }
 
 }  // namespace

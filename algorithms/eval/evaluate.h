@@ -82,6 +82,7 @@ struct EvalOptions {
   bool keep_vertices = false;                  // fill EvalResult::vertices
   double rmsz_grid_m = 0.25;                   // RMSZ sampling grid
   double building_overlap_fraction = 0.5;      // footprints, of the building's own area
+  double building_top_tolerance_m = 2.0;       // BuildingScores::top_off
   // Completeness and correctness are also given over the planes of at
   // least this plan area (ISPRS benchmark: Cm,10 and Cr,10 over planes
   // larger than 10 m², Rottensteiner et al. 2014); matching still uses all.
@@ -175,6 +176,13 @@ struct BuildingScores {
   // The compared buildings by (reference, result) SIG3D code: where the
   // roof types go wrong.
   std::map<std::pair<int, int>, int> roof_type_pairs;
+  // The buildings are matched in plan only: a garage roofed metres too high
+  // (the tree crown over it) counts as found. Of the matched pairs, how
+  // many have both roof tops, how many of those lie more than
+  // EvalOptions::building_top_tolerance_m apart, and the RMS of the
+  // differences.
+  int top_compared = 0, top_off = 0;
+  std::optional<double> top_rms_m;
 };
 
 struct Lines3dScores {

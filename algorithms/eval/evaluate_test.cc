@@ -262,6 +262,28 @@ TEST(Evaluate, LargePlanesAreAlsoScoredAlone) {
   EXPECT_FALSE(none.roof_planes.correctness_large.has_value());
 }
 
+// Buildings match in plan; their roof tops are compared apart, so that a
+// garage roofed metres too high (at the tree crown over it) is seen.
+TEST(Evaluate, MatchedBuildingsAreComparedByTheirRoofTops) {
+  CityModel truth, result;
+  truth.buildings.push_back(eval_test::Box("A", 0, 0, 10, 8, 0, 6));
+  truth.buildings.push_back(eval_test::Box("B", 20, 0, 4, 3, 0, 3));
+  result.buildings.push_back(eval_test::Box("a", 0, 0, 10, 8, 0, 6.5));
+  result.buildings.push_back(eval_test::Box("b", 20, 0, 4, 3, 0, 10));
+  const EvalResult r = Evaluate(result, truth, {});
+  EXPECT_DOUBLE_EQ(*r.buildings.completeness, 1);
+  EXPECT_EQ(r.buildings.top_compared, 2);
+  EXPECT_EQ(r.buildings.top_off, 1);
+  ASSERT_TRUE(r.buildings.top_rms_m.has_value());
+  EXPECT_NEAR(*r.buildings.top_rms_m, std::sqrt((0.5 * 0.5 + 7.0 * 7.0) / 2), 1e-9);
+  EXPECT_NE(FormatTable(r).find("roof top within 2.0 m"), std::string::npos) << FormatTable(r);
+  EXPECT_NE(FormatTable(r).find("1 of 2 found, RMS 4.96 m"), std::string::npos) << FormatTable(r);
+  EXPECT_EQ(ToJson(r)["buildings"]["top_off"], 1);
+  EvalOptions o;
+  o.building_top_tolerance_m = 8;
+  EXPECT_EQ(Evaluate(result, truth, o).buildings.top_off, 0);
+}
+
 TEST(Evaluate, WrongNormalsDoNotMatchButFootprintsDo) {
   CityModel flat, gable;
   flat.buildings.push_back(eval_test::Box("B", 0, 0, 12, 8, 0, 6));
