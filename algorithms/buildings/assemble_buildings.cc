@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 
+#include "algorithms/buildings/classify_roof_type.h"
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
 #include "algorithms/buildings/right_corners.h"
@@ -123,80 +124,6 @@ std::vector<int> CloseRing(const Welder& w, const std::vector<int>& ids) {
   while (out.size() > 1 && out.front() == out.back()) out.pop_back();
   return out;
 }
-
-// Corners of a face outline: its vertices once those within merge_m of the
-// last kept one are merged and those where the outline turns by less than
-// min_turn_deg are dropped. The envelope leaves near-coincident and
-// collinear vertices where faces were snapped together: the triangles of
-// a pavilion roof came out with 5-6 vertices and edges of 0-0.1 m.
-int CornerCount(const std::vector<Eigen::Vector3d>& ring, double merge_m, double min_turn_deg) {
-  std::vector<Eigen::Vector3d> v;
-  for (const Eigen::Vector3d& p : ring)
-    if (v.empty() || (p - v.back()).norm() > merge_m) v.push_back(p);
-  while (v.size() > 1 && (v.front() - v.back()).norm() <= merge_m) v.pop_back();
-  const double min_cos = std::cos(min_turn_deg * kDeg);
-  for (bool dropped = true; dropped && v.size() > 3;) {
-    dropped = false;
-    for (size_t i = 0; i < v.size() && v.size() > 3; ++i) {
-      const Eigen::Vector3d a = v[i] - v[(i + v.size() - 1) % v.size()];
-      const Eigen::Vector3d b = v[(i + 1) % v.size()] - v[i];
-      if (a.norm() > 0 && b.norm() > 0 && a.normalized().dot(b.normalized()) >= min_cos) {
-        v.erase(v.begin() + static_cast<std::ptrdiff_t>(i));
-        dropped = true;
-        break;
-      }
-    }
-  }
-  return static_cast<int>(v.size());
-}
-
-}  // namespace
-
-int ClassifyRoofType(const std::vector<Polygon3>& faces) {
-  double total = 0;
-  for (const Polygon3& f : faces) total += f.Area();
-  if (total <= 0) return roof_type::kUnknown;
-  struct Face {
-    double tilt_deg, azimuth_deg, area;
-    size_t vertices;
-  };
-  std::vector<Face> big;
-  for (const Polygon3& f : faces) {
-    const double a = f.Area();
-    if (a < 0.05 * total) continue;
-    const Eigen::Vector3d n = f.Normal();
-    big.push_back({std::acos(std::clamp(n.z(), -1.0, 1.0)) / kDeg, std::atan2(n.y(), n.x()) / kDeg,
-                   a, static_cast<size_t>(CornerCount(f.exterior, 0.5, 15.0))});
-  }
-  int tilted = 0;
-  for (const Face& f : big) tilted += f.tilt_deg >= 5.0;
-  if (tilted == 0) return roof_type::kFlat;
-  if (big.size() == 1) return roof_type::kMonopitch;
-  auto azimuth_gap = [](double a, double b) {
-    const double d = std::fmod(std::abs(a - b), 360.0);
-    return std::min(d, 360.0 - d);
-  };
-  if (big.size() == 2 && tilted == 2 &&
-      std::abs(azimuth_gap(big[0].azimuth_deg, big[1].azimuth_deg) - 180.0) < 20.0)
-    return roof_type::kGabled;
-  if (big.size() == 4 && tilted == 4) {
-    // Four slopes facing four directions roughly 90 degrees apart.
-    std::vector<double> az;
-    for (const Face& f : big) az.push_back(f.azimuth_deg);
-    std::sort(az.begin(), az.end());
-    bool quad = true;
-    for (size_t k = 0; k < 4; ++k)
-      quad = quad && std::abs(azimuth_gap(az[k], az[(k + 1) % 4]) - 90.0) < 25.0;
-    if (quad) {
-      int triangles = 0;
-      for (const Face& f : big) triangles += f.vertices == 3;
-      return triangles == 4 ? roof_type::kPavilion : roof_type::kHipped;
-    }
-  }
-  return roof_type::kCombination;
-}
-
-namespace {
 
 // Two patches belong to one roof when they come within adjacency_gap_m of
 // each other in plan and their planes meet there (heights within
@@ -1070,14 +997,16 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
           return x.double_attributes.at("footprint_m2") < y.double_attributes.at("footprint_m2");
         });
     b.roof_type = largest->roof_type;
-    // ... unless the parts' faces together make a gable: its two faces
-    // built apart as shed roofs, back to back.
+    // ... unless the parts' faces together make a gable (or a half-hipped
+    // one): its two faces built apart as shed roofs, back to back.
     std::vector<Polygon3> faces;
     for (const Building& part : b.parts) {
       const std::vector<Polygon3> roofs = RoofFaces(part);
       faces.insert(faces.end(), roofs.begin(), roofs.end());
     }
-    if (ClassifyRoofType(faces) == roof_type::kGabled) b.roof_type = roof_type::kGabled;
+    const int together = ClassifyRoofType(faces);
+    if (together == roof_type::kGabled || together == roof_type::kHalfHipped)
+      b.roof_type = together;
     b.measured_height = b.RoofTopZ() - b.GroundZ();
     if (!outlines.empty()) {
       std::string& outline = b.string_attributes["outline"];

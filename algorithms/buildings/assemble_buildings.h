@@ -337,11 +337,4 @@ std::vector<std::string> DropOutsideFootprints(std::vector<RoofPlaneHypothesis>*
                                                const std::vector<Footprint>& footprints,
                                                const AssemblyOptions& options);
 
-// Roof type (roof_type:: code) from the roof faces: flat, monopitch,
-// gabled, hipped, pavilion (pyramid) or combination. Faces under 5 % of
-// the roof area are ignored (slivers of the envelope). A face is a
-// triangle (pavilion against hipped) when it has three corners once its
-// vertices within 0.5 m are merged and turns under 15 deg are ignored.
-int ClassifyRoofType(const std::vector<Polygon3>& roof_faces);
-
 }  // namespace roofsweep

@@ -1052,29 +1052,6 @@ TEST(AssembleBuildings, ColourBreaksDownBothFacesCutTerracedHouses) {
   EXPECT_EQ(AssembleBuildings(shed, Flat(0)).party_cuts, 0);
 }
 
-// A pyramid roof over a 10 x 10 m square whose faces came out of the
-// envelope with extra vertices: the apex split by a few centimetres and a
-// vertex halfway along an eave. Still a pavilion; with a 2 m ridge, hipped.
-TEST(ClassifyRoofType, TrianglesWithSnappingVerticesAreTriangles) {
-  auto roof = [](double half_ridge, double split) {
-    const Eigen::Vector3d a(0, 0, 5), b(10, 0, 5), c(10, 10, 5), d(0, 10, 5);
-    const Eigen::Vector3d top0(5 - half_ridge, 5, 9), top1(5 + half_ridge, 5, 9);
-    const Eigen::Vector3d nudge(split, 0, 0);
-    auto face = [](std::vector<Eigen::Vector3d> ring) {
-      Polygon3 p;
-      p.exterior = std::move(ring);
-      return p;
-    };
-    return std::vector<Polygon3>{
-        face({a, Eigen::Vector3d(5, 0, 5), b, top1 + nudge, top1, top0}),  // south
-        face({b, c, top1}),                                                // east
-        face({c, d, top0, top0 - nudge, top1}),                            // north
-        face({d, a, top0})};                                               // west
-  };
-  EXPECT_EQ(ClassifyRoofType(roof(0, 0.03)), roof_type::kPavilion);
-  EXPECT_EQ(ClassifyRoofType(roof(1, 0.03)), roof_type::kHipped);
-}
-
 // A row of one eave height: a shed roof rising 15 deg beside a 35 deg gable.
 // The shed's plane runs below the gable's faces, so the lower envelope of
 // the row hides the gable; the two faces must still end in one gabled
