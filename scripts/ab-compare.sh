@@ -143,6 +143,7 @@ figures = [
     ("building roof tops within 2 m", lambda d: d["buildings"]["top_compared"] and
      (d["buildings"]["top_compared"] - d["buildings"]["top_off"]) / d["buildings"]["top_compared"]
      if "top_compared" in d["buildings"] else None, 100),
+    ("roof type agreement", lambda d: d["buildings"].get("roof_type_agreement"), 100),
 ]
 for mode in ("matched", "footprints"):
     print("\n%s (%s): %s against %s, %d blocks x seeds %s" % (
