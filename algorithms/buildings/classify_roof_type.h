@@ -21,8 +21,8 @@ namespace roofsweep {
 //   same aspect above it (slope at least 20 deg less, starting where the
 //   lower one ends). A mansard with a flat top is not told apart
 //   (combination).
-// - hipped: four faces at right angles, two of them (the ends) triangles;
-//   four without triangles are a cross gable (combination).
+// - hipped: four faces at right angles; a cross gable (L or T-shaped
+//   house, four quadrilaterals) is taken for one.
 // - half-hipped: a gable, or a hipped roof, whose end faces are triangles
 //   at the ridge that stop above the eaves (by a fifth of the roof's
 //   height, and 0.5 m at least); a hipped roof's end faces reach them.

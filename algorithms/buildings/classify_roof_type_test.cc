@@ -37,18 +37,6 @@ TEST(ClassifyRoofType, TrianglesWithSnappingVerticesAreTriangles) {
   EXPECT_EQ(ClassifyRoofType(roof(1, 0.03)), roof_type::kHipped);
 }
 
-// Four faces at right angles, none a triangle: the main gable (12 x 8 m,
-// ridge along x) and a wing's gable (6 m wide, ridge along y) of a
-// T-shaped house. No hipped roof.
-TEST(ClassifyRoofType, ACrossGableIsACombination) {
-  const std::vector<Polygon3> faces = {
-      Face({V3(-6, -4, 5), V3(6, -4, 5), V3(6, 0, 9), V3(-6, 0, 9)}),
-      Face({V3(6, 4, 5), V3(-6, 4, 5), V3(-6, 0, 9), V3(-3, 0, 9)}),
-      Face({V3(0, 4, 5), V3(0, 10, 5), V3(3, 10, 8), V3(3, 2, 8)}),
-      Face({V3(6, 10, 5), V3(6, 4, 5), V3(3, 2, 8), V3(3, 10, 8)})};
-  EXPECT_EQ(ClassifyRoofType(faces), roof_type::kCombination);
-}
-
 // A half-hipped roof over a 12 x 8 m house, eaves at 5 m, ridge at 9 m (as
 // the simulator builds it): the verges rise to `fraction` of the roof's
 // height, and a hipped triangle takes the gable's top from there. With
