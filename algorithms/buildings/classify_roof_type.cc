@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <limits>
 
+#include "algorithms/geometry/segment3.h"
+
 namespace roofsweep {
 namespace {
 
@@ -71,22 +73,18 @@ bool Opposite(const Face& a, const Face& b) {
 
 double DistanceToRing(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& ring) {
   double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const Eigen::Vector3d& a = ring[i];
-    const Eigen::Vector3d& b = ring[(i + 1) % ring.size()];
-    const Eigen::Vector3d ab = b - a;
-    const double t =
-        ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0;
-    best = std::min(best, (a + t * ab - p).norm());
-  }
+  for (size_t i = 0; i < ring.size(); ++i)
+    best = std::min(best, Segment3{ring[i], ring[(i + 1) % ring.size()]}.Distance(p));
   return best;
 }
 
 // A mansard's break on one side: `upper` has the aspect of `lower`, is at
 // least 20 deg shallower and starts along `lower`'s top edge (two of its
 // top vertices, a metre apart or more, on `upper`'s outline). The shared
-// edge keeps a shallow roof of a taller part beside a steep one apart.
+// edge keeps a shallow roof of a taller part beside a steep one apart. A
+// flat upper face has no aspect (its azimuth is noise): no break.
 bool BreaksInto(const Face& lower, const Face& upper) {
+  if (upper.tilt_deg < 5.0) return false;
   if (AzimuthGap(lower.azimuth_deg, upper.azimuth_deg) >= 25.0) return false;
   if (lower.tilt_deg - upper.tilt_deg < 20.0) return false;
   if (upper.min_z < lower.max_z - 0.5 || upper.min_z < lower.min_z + 1.0) return false;
@@ -116,21 +114,16 @@ bool IsMansard(const std::vector<Face>& big, const std::vector<Face>& small) {
   return false;
 }
 
-// An end face of the gable whose main faces are `a` and `b` (opposite):
-// it faces across them, and its top reaches their ridge.
-bool IsEnd(const Face& f, const Face& a, const Face& b) {
-  const double ridge = std::max(a.max_z, b.max_z);
-  return f.tilt_deg >= 5.0 && std::abs(AzimuthGap(f.azimuth_deg, a.azimuth_deg) - 90.0) < 25.0 &&
-         f.max_z >= ridge - 0.5;
-}
-
-// An end face of a half-hip: a triangle that stops above the eaves of the
-// main faces, by a fifth of the roof's height and 0.5 m at least (a hip's
+// An end face of a half-hip on the gable whose main faces are `a` and `b`:
+// a triangle facing across them, its top at their ridge, that stops above
+// their eaves by a fifth of the roof's height and 0.5 m at least (a hip's
 // end face reaches the eaves).
 bool IsHalfHipEnd(const Face& f, const Face& a, const Face& b) {
   const double eave = std::min(a.min_z, b.min_z);
   const double ridge = std::max(a.max_z, b.max_z);
-  return IsEnd(f, a, b) && f.corners == 3 && f.min_z >= eave + std::max(0.5, 0.2 * (ridge - eave));
+  return f.tilt_deg >= 5.0 && f.corners == 3 &&
+         std::abs(AzimuthGap(f.azimuth_deg, a.azimuth_deg) - 90.0) < 25.0 &&
+         f.max_z >= ridge - 0.5 && f.min_z >= eave + std::max(0.5, 0.2 * (ridge - eave));
 }
 
 }  // namespace
@@ -162,12 +155,12 @@ int ClassifyRoofType(const std::vector<Polygon3>& roof_faces) {
   const Face& a = big[0];
   const Face& b = big[1];
   const bool gable = Opposite(a, b);
-  if (big.size() == 2)
-    return !gable ? roof_type::kCombination
-           : std::any_of(small.begin(), small.end(),
-                         [&](const Face& f) { return IsHalfHipEnd(f, a, b); })
-               ? roof_type::kHalfHipped
-               : roof_type::kGabled;
+  if (big.size() == 2) {
+    if (!gable) return roof_type::kCombination;
+    const bool ends = std::any_of(small.begin(), small.end(),
+                                  [&](const Face& f) { return IsHalfHipEnd(f, a, b); });
+    return ends ? roof_type::kHalfHipped : roof_type::kGabled;
+  }
   // Half-hipped: every other face an end of the gable stopping above the
   // eaves (a missed or small second end does not change the type).
   if (gable && big.size() <= 4 &&

@@ -118,6 +118,19 @@ TEST(ClassifyRoofType, ASteepFaceUnderAShallowOneOnOppositeSidesIsAMansard) {
   EXPECT_NE(ClassifyRoofType(one_side), roof_type::kMansard);
 }
 
+// Steep faces on all four sides under a flat top, built as two faces
+// falling 1 deg east and west: their azimuths are noise, and they make no
+// breaks for the east and west faces under them. No mansard.
+TEST(ClassifyRoofType, AFlatTopOverSteepFacesMakesNoBreak) {
+  std::vector<Polygon3> faces = MansardRoof(true);
+  faces.resize(4);
+  const double x = 6 - 1.2, y = 5 - 1.2, hb = 5 + std::tan(65 * kDeg) * 1.2;
+  const double mid = hb + std::tan(1 * kDeg) * x;
+  faces.push_back(Face({V3(0, -y, mid), V3(x, -y, hb), V3(x, y, hb), V3(0, y, mid)}));
+  faces.push_back(Face({V3(-x, -y, hb), V3(0, -y, mid), V3(0, y, mid), V3(-x, y, hb)}));
+  EXPECT_NE(ClassifyRoofType(faces), roof_type::kMansard);
+}
+
 // A steep gable (50 deg, ridge at 9.8 m) beside a taller house with a
 // shallow gable (15 deg, eaves at 11 m) facing the same ways: steep under
 // shallow on both sides, but the faces share no edge.
