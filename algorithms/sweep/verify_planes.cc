@@ -125,6 +125,9 @@ struct Scores {
   // reference windows' structure tensors in plan coordinates, each
   // normalised to trace 1 (which way the texture varies).
   Eigen::Matrix2d texture = Eigen::Matrix2d::Zero();
+  // Samples visited (up to the one that reached max_samples), and how many
+  // of them at least two views see, textured or not.
+  int visited = 0, seen = 0;
 };
 
 // Structure tensor (sum of gradient outer products) of a w x w window,
@@ -165,7 +168,7 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
   const size_t n_samples = samples.size();
   size_t stride = std::max<size_t>(1, static_cast<size_t>(0.618034 * n_samples));
   while (n_samples > 1 && std::gcd(stride, n_samples) != 1) ++stride;
-  for (size_t j = 0; j < n_samples && s.n < o.max_samples; ++j) {
+  for (size_t j = 0; j < n_samples && s.n < o.max_samples; ++j, ++s.visited) {
     const Eigen::Vector3d& X0 = samples[(j * stride) % n_samples];
     const Eigen::Vector3d X(X0.x(), X0.y(), PlaneZ(pl, X0.x(), X0.y()));
     // Reference: the view whose centre is nearest in plan (least
@@ -185,6 +188,7 @@ Scores ScorePlane(const Block& block, const std::vector<cv::Mat>& grey,
       if (d < best) best = d, refv = static_cast<int>(seen.size()) - 1;
     }
     if (seen.size() < 2) continue;
+    ++s.seen;
     const int rv = seen[refv].first;
     const Camera& rcam = block.CameraOf(block.views[rv]);
     const Pose& rpose = block.views[rv].pose;
@@ -561,31 +565,41 @@ std::vector<ModelHeight> BestModelHeights(const Block& block, const std::vector<
     // samples find it as well at a quarter of the cost.
     VerifyOptions coarse_o = o;
     coarse_o.max_samples = std::max(o.min_samples, o.max_samples / 4);
+    struct Tried {
+      double h, score, seen_share;
+    };
     auto score = [&](double h, const VerifyOptions& so) {
       double sum = 0;
-      int n = 0;
+      int n = 0, visited = 0, seen = 0;
       for (size_t f = 0; f < m.planes.size(); ++f) {
         Eigen::Vector4d pl = m.planes[f];
         pl[3] -= pl[2] * h;
         const Scores s = ScorePlane(block, grey, samples[f], pl, so);
-        sum += s.sum, n += s.n;
+        sum += s.sum, n += s.n, visited += s.visited, seen += s.seen;
       }
-      return n >= o.min_samples ? sum / n : -1.0;
+      return Tried{h, n >= o.min_samples ? sum / n : -1.0,
+                   visited > 0 ? static_cast<double>(seen) / visited : 0.0};
     };
     const double step = std::max(2.0 / k, (m.h_hi - m.h_lo) / max_steps);
-    double best_h = std::numeric_limits<double>::quiet_NaN(), best = -1;
+    std::vector<Tried> coarse;
+    double max_share = 0;
     for (double h = m.h_lo; h <= m.h_hi + 1e-9; h += step) {
-      const double v = score(h, coarse_o);
-      if (v > best) best = v, best_h = h;
+      coarse.push_back(score(h, coarse_o));
+      max_share = std::max(max_share, coarse.back().seen_share);
     }
-    if (!(best > 0)) return;
-    const double centre = best_h;
-    best = -1;
+    const double min_share = o.model_min_seen_share * max_share;
+    Tried best{std::numeric_limits<double>::quiet_NaN(), -1, 0};
+    for (const Tried& t : coarse)
+      if (t.seen_share >= min_share && t.score > best.score) best = t;
+    if (!(best.score > 0)) return;
+    const double centre = best.h;
+    best.score = -1;
     for (double h = centre - step; h <= centre + step + 1e-9; h += 0.5 / k) {
-      const double v = score(h, o);
-      if (v > best) best = v, best_h = h;
+      const Tried t = score(h, o);
+      if (t.seen_share >= min_share && t.score > best.score) best = t;
     }
-    out[i] = {best_h, best};
+    if (!(best.score > 0)) return;
+    out[i] = {best.h, best.score};
   });
   return out;
 }

@@ -225,6 +225,14 @@ struct VerifyOptions {
   // 0.77-0.83 on the ground; true roofs so accepted scored 0.20-0.45 there,
   // below their own score.
   bool ground_on_lines = true;
+  // BestModelHeights: a height counts only where at least this share of
+  // the model's samples lies in two views or more, relative to the best
+  // share over the window. High up, a footprint leaves all views but two
+  // and mostly leaves those too; its score is then the agreement of two
+  // views on the corner of it still inside them. On `hard` seed 1 a gabled
+  // house 18.6 m high got a flat roof 56.8 m up (score 0.48 on 12 % of its
+  // samples, against 0.2-0.25 around its true height seen whole).
+  double model_min_seen_share = 0.5;
 };
 
 struct PlaneVerification {
@@ -272,7 +280,9 @@ struct ModelHeight {
 // Per search, the h at which the views agree best on the model: the mean
 // Cor+ over the samples of all its faces (each on its own plane), tried in
 // steps of about two pixels of parallax (at most max_steps of them), then
-// refined to about half a pixel around the best. A flat roof is one face on
+// refined to about half a pixel around the best; only heights at which the
+// model is seen over most of it (VerifyOptions::model_min_seen_share) are
+// candidates. A flat roof is one face on
 // the plane z = 0. The result is a hypothesis only: VerifyPlanes decides on
 // it. The scores of several models over
 // one footprint compare: their samples lie on one plan grid. Parallel over
