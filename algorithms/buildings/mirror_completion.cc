@@ -1,5 +1,7 @@
 #include "algorithms/buildings/mirror_completion.h"
 
+#include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -139,6 +141,128 @@ std::vector<RoofPlaneHypothesis> MirroredFaces(const std::vector<RoofPlaneHypoth
     q.lines_xy = {*ridge};
     q.derived = true;
     q.id = p.id + " mirrored";
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypothesis>& planes,
+                                                 const HipEndMirrorOptions& o) {
+  // Uphill unit direction in plan of each plane in the slope range; zero
+  // for the others.
+  std::vector<Eigen::Vector2d> up(planes.size(), Eigen::Vector2d::Zero());
+  for (size_t i = 0; i < planes.size(); ++i) {
+    const RoofPlaneHypothesis& p = planes[i];
+    if (p.patch.size() < 3 || !(p.plane[2] > 0) || !(std::abs(SignedArea(p.patch)) > 1e-9))
+      continue;
+    const double slope = std::acos(std::min(1.0, p.plane[2]));
+    if (slope < o.min_slope_deg * kDeg || slope > o.max_slope_deg * kDeg) continue;
+    up[i] = Gradient(p.plane).head<2>().normalized();
+  }
+  const double cos_opposite = std::cos(o.opposite_max_turn_deg * kDeg);
+  const double cos_end = std::cos(o.end_max_turn_deg * kDeg);
+  std::vector<RoofPlaneHypothesis> out;
+  for (size_t h = 0; h < planes.size(); ++h) {
+    if (up[h].isZero()) continue;
+    const RoofPlaneHypothesis& end = planes[h];
+    // The long faces beside it: a pair falling opposite ways whose ridge
+    // runs along the end's uphill direction; of several, the pair of most
+    // area.
+    std::vector<size_t> beside;
+    for (size_t i = 0; i < planes.size(); ++i)
+      if (i != h && !up[i].isZero() &&
+          std::abs(up[i].dot(up[h])) < std::sin(o.end_max_turn_deg * kDeg) &&
+          ConvexDistance(end.patch, planes[i].patch) <= o.max_gap_m)
+        beside.push_back(i);
+    double best_area = 0;
+    std::pair<size_t, size_t> pair{0, 0};
+    for (size_t a = 0; a < beside.size(); ++a)
+      for (size_t b = a + 1; b < beside.size(); ++b) {
+        const size_t i = beside[a], j = beside[b];
+        if (up[i].dot(up[j]) > -cos_opposite) continue;
+        const double area =
+            std::abs(SignedArea(planes[i].patch)) + std::abs(SignedArea(planes[j].patch));
+        if (area > best_area) best_area = area, pair = {i, j};
+      }
+    if (!(best_area > 0)) continue;
+    // Along the ridge, pointing the way the end rises (into the roof).
+    Eigen::Vector2d t(-up[pair.first].y(), up[pair.first].x());
+    if (t.dot(up[h]) < 0) t = -t;
+    if (t.dot(up[h]) < cos_end) continue;
+    // An end meets both long faces in its hips, which rise to the ridge's
+    // end: the point where the three planes meet lies at the end's top,
+    // on or next to all three patches, with the end below it. A face of
+    // another roof beside the pair (a neighbour, a wing at right angles)
+    // rises along their ridge too, but meets them elsewhere: one mirrored
+    // on `realistic-11` became a second north face a metre and a half
+    // below the first.
+    Eigen::Matrix3d normals;
+    Eigen::Vector3d offsets;
+    normals << planes[pair.first].plane.head<3>().transpose(),
+        planes[pair.second].plane.head<3>().transpose(), end.plane.head<3>().transpose();
+    offsets << -planes[pair.first].plane[3], -planes[pair.second].plane[3], -end.plane[3];
+    if (!(std::abs(normals.determinant()) > 1e-6)) continue;
+    const Eigen::Vector3d apex = normals.partialPivLu().solve(offsets);
+    const Eigen::Vector2d apex_xy = apex.head<2>();
+    auto near = [&](const Ring2& patch) {
+      return InsideConvex(patch, apex_xy) || DistanceToRing(patch, apex_xy) <= o.max_gap_m;
+    };
+    double end_top = -std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector2d& v : end.patch)
+      end_top = std::max(end_top, -(end.plane.head<2>().dot(v) + end.plane[3]) / end.plane[2]);
+    if (!near(end.patch) || !near(planes[pair.first].patch) || !near(planes[pair.second].patch) ||
+        std::abs(end_top - apex.z()) > o.apex_max_dz_m ||
+        !(FirstMoment(end.patch).dot(t) / SignedArea(end.patch) < apex_xy.dot(t)))
+      continue;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t i : {pair.first, pair.second})
+      for (const Eigen::Vector2d& v : planes[i].patch) {
+        lo = std::min(lo, v.dot(t));
+        hi = std::max(hi, v.dot(t));
+      }
+    const Eigen::Vector2d c = FirstMoment(end.patch) / SignedArea(end.patch);
+    if (!(hi > lo) || c.dot(t) - lo > o.end_fraction * (hi - lo)) continue;
+    // The mirror: the vertical plane x . t = mid.
+    const double mid = 0.5 * (lo + hi);
+    const Eigen::Vector2d on_mirror = mid * t;
+    const Eigen::Vector2d along(-t.y(), t.x());
+    std::vector<Eigen::Vector2d> mirrored;
+    for (const Eigen::Vector2d& v : end.patch) mirrored.push_back(Reflect(v, on_mirror, along));
+    Ring2 patch = ConvexHull(mirrored);
+    if (patch.size() < 3 || std::abs(SignedArea(patch)) < o.min_patch_m2) continue;
+    // The normal's horizontal part reflected across the mirror; the plane
+    // through the reflection of the end's centroid at its height.
+    const Eigen::Vector3d n = end.plane.head<3>();
+    const Eigen::Vector2d nh = n.head<2>() - 2 * n.head<2>().dot(t) * t;
+    const Eigen::Vector3d m(nh.x(), nh.y(), n.z());
+    const Eigen::Vector2d cm = Reflect(c, on_mirror, along);
+    const Eigen::Vector3d x(cm.x(), cm.y(), -(n.head<2>().dot(c) + end.plane[3]) / n.z());
+    bool found = false;
+    for (const RoofPlaneHypothesis& q : planes) {
+      if (q.plane.head<3>().dot(m) < std::cos(o.same_angle_deg * kDeg)) continue;
+      found = found || IntersectionArea(q.patch, patch) >= o.same_cover * SignedArea(patch);
+    }
+    if (found) continue;
+    RoofPlaneHypothesis q;
+    q.plane << m, -m.dot(x);
+    q.patch = std::move(patch);
+    q.score = 0;
+    // No 3D line supports it (lines 0); in plan it carries the end's lines
+    // mirrored, which lie on its hips and eave where the roof is
+    // symmetric: where the long faces run on over it, they let it meet
+    // them in the creases of its hips (GroupingOptions::
+    // conflict_cut_at_crease), and the verification's test away from its
+    // lines looks between them.
+    // The assembly asks a plane for a line of some length
+    // (AssemblyOptions::min_line_length_m): it gets that of the longest it
+    // carries, as a mirrored face gets its ridge's.
+    for (const auto& l : end.lines_xy) {
+      q.lines_xy.push_back({Reflect(l[0], on_mirror, along), Reflect(l[1], on_mirror, along)});
+      q.longest_line_m = std::max(q.longest_line_m, (l[1] - l[0]).norm());
+    }
+    q.similarity = end.similarity;
+    q.derived = true;
+    q.id = end.id + " mirrored along its ridge";
     out.push_back(std::move(q));
   }
   return out;

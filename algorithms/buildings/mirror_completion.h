@@ -64,4 +64,45 @@ struct MirrorCompletionOptions {
 std::vector<RoofPlaneHypothesis> MirroredFaces(const std::vector<RoofPlaneHypothesis>& planes,
                                                const MirrorCompletionOptions& options = {});
 
+// Options of MirroredHipEnds. Angles in degrees, lengths in metres.
+struct HipEndMirrorOptions {
+  // Hip ends and the long faces beside them in this slope range.
+  double min_slope_deg = 15.0;
+  double max_slope_deg = 65.0;
+  // The long faces: two planes falling opposite ways (uphill directions
+  // within opposite_max_turn_deg of opposite), each within max_gap_m of
+  // the hip end's patch. The hip end rises along their ridge (its uphill
+  // direction within end_max_turn_deg of it).
+  double opposite_max_turn_deg = 20.0;
+  double end_max_turn_deg = 25.0;
+  double max_gap_m = 1.0;
+  // The point where the three planes meet (the ridge's end) lies within
+  // max_gap_m of each patch, and within apex_max_dz_m of the end's top.
+  double apex_max_dz_m = 0.5;
+  // The hip end lies at one end of the long faces' extent along the ridge:
+  // its centroid within end_fraction of that extent from the end it falls
+  // towards.
+  double end_fraction = 0.35;
+  // As MirrorCompletionOptions: no proposal where a plane within
+  // same_angle_deg covers same_cover of the mirrored patch, nor for
+  // patches under min_patch_m2.
+  double same_angle_deg = 5.0;
+  double same_cover = 0.5;
+  double min_patch_m2 = 1.0;
+};
+
+// Completion by symmetry along the ridge: a hipped (or half-hipped) roof
+// has an end at each end of its ridge, and the sweep often finds one and
+// not the other (a hip end is small and steep, and its hips are edges
+// between faces of one colour). Each face that is the end of two long
+// faces falling opposite ways proposes its mirror image across the
+// vertical plane halfway along the long faces' extent, perpendicular to
+// their ridge, with the mirror images of its lines. A proposal is a
+// hypothesis only (derived): the caller verifies it photometrically, and
+// in conflicts it yields to every plane found directly; where the long
+// faces run on over it, it meets them in the convex creases of its hips.
+// Deterministic.
+std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypothesis>& planes,
+                                                 const HipEndMirrorOptions& options = {});
+
 }  // namespace roofsweep

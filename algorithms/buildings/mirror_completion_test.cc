@@ -140,5 +140,97 @@ TEST(MirroredFaces, TheRidgeIsWhereTheFaceMeetsAPlaneFallingTheOtherWay) {
   EXPECT_TRUE(MirroredFaces({south, apart}).empty());
 }
 
+// A hipped roof 12 x 6 m: ridge along x from -3 to 3 at z = 5, eaves at
+// z = 2 on x = +-6 and y = +-3, every face at 45 degrees. `with_ends`:
+// the west end (w), the east end (e).
+std::vector<RoofPlaneHypothesis> HippedRoof(const std::string& with_ends) {
+  auto face = [](const std::string& id, const Eigen::Vector3d& up_normal, const Eigen::Vector3d& on,
+                 Ring2 patch) {
+    RoofPlaneHypothesis p;
+    p.id = id;
+    const Eigen::Vector3d n = up_normal.normalized();
+    p.plane << n, -n.dot(on);
+    p.patch = std::move(patch);
+    p.lines = 2;
+    p.score = 10;
+    return p;
+  };
+  std::vector<RoofPlaneHypothesis> roof = {
+      face("south", {0, -1, 1}, {0, 0, 5}, {{-6, -3}, {6, -3}, {3, 0}, {-3, 0}}),
+      face("north", {0, 1, 1}, {0, 0, 5}, {{-3, 0}, {3, 0}, {6, 3}, {-6, 3}})};
+  if (with_ends.find('w') != std::string::npos) {
+    roof.push_back(face("west", {-1, 0, 1}, {-3, 0, 5}, {{-6, -3}, {-3, 0}, {-6, 3}}));
+    roof.back().lines_xy = {{Eigen::Vector2d(-6, -3), Eigen::Vector2d(-6, 3)},   // eave
+                            {Eigen::Vector2d(-6, -3), Eigen::Vector2d(-3, 0)}};  // hip
+  }
+  if (with_ends.find('e') != std::string::npos)
+    roof.push_back(face("east", {1, 0, 1}, {3, 0, 5}, {{6, -3}, {6, 3}, {3, 0}}));
+  return roof;
+}
+
+TEST(MirroredHipEnds, AHipEndProposesTheOneAtTheOtherEndOfItsRidge) {
+  const std::vector<RoofPlaneHypothesis> out = MirroredHipEnds(HippedRoof("w"));
+  ASSERT_EQ(out.size(), 1u);
+  const RoofPlaneHypothesis& q = out[0];
+  EXPECT_TRUE(q.derived);
+  EXPECT_EQ(q.id, "west mirrored along its ridge");
+  EXPECT_EQ(q.lines, 0);  // no 3D line supports it
+  // The east end: z = 5 at the ridge's end, 2 at the eave x = 6.
+  EXPECT_NEAR(PlaneZ(q, 3, 0), 5.0, 1e-9);
+  EXPECT_NEAR(PlaneZ(q, 6, -2), 2.0, 1e-9);
+  EXPECT_NEAR(std::abs(SignedArea(q.patch)), 9.0, 1e-9);
+  for (const auto& v : q.patch) EXPECT_GE(v.x(), 3 - 1e-9);
+  // It carries the west end's lines mirrored: the east eave and hip.
+  ASSERT_EQ(q.lines_xy.size(), 2u);
+  EXPECT_NEAR(q.lines_xy[0][0].x(), 6.0, 1e-9);
+  EXPECT_NEAR(q.lines_xy[0][1].x(), 6.0, 1e-9);
+  EXPECT_NEAR(q.longest_line_m, 6.0, 1e-9);
+}
+
+TEST(MirroredHipEnds, TheLongFacesRunningOnToTheEndsGiveTheSameEnd) {
+  // The long faces grown along the footprint to its ends, over the east
+  // end (as the growth along footprints leaves them).
+  std::vector<RoofPlaneHypothesis> roof = HippedRoof("w");
+  roof[0].patch = {{-6, -3}, {6, -3}, {6, 0}, {-3, 0}};
+  roof[1].patch = {{-3, 0}, {6, 0}, {6, 3}, {-6, 3}};
+  const std::vector<RoofPlaneHypothesis> out = MirroredHipEnds(roof);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(PlaneZ(out[0], 3, 0), 5.0, 1e-9);
+  EXPECT_NEAR(PlaneZ(out[0], 6, 1), 2.0, 1e-9);
+}
+
+TEST(MirroredHipEnds, NothingWhereBothEndsAreFoundOrThereIsNoHipEnd) {
+  EXPECT_TRUE(MirroredHipEnds(HippedRoof("we")).empty());
+  EXPECT_TRUE(MirroredHipEnds(HippedRoof("")).empty());
+  // A face rising along the ridge in the middle of the roof (a dormer's
+  // cheek, a fragment) is no end.
+  std::vector<RoofPlaneHypothesis> roof = HippedRoof("");
+  roof.push_back(roof[0]);
+  roof.back().id = "middle";
+  const Eigen::Vector3d n = Eigen::Vector3d(-1, 0, 1).normalized();
+  roof.back().plane << n, -n.dot(Eigen::Vector3d(0, 0, 4));
+  roof.back().patch = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  EXPECT_TRUE(MirroredHipEnds(roof).empty());
+}
+
+TEST(MirroredHipEnds, AFaceBesideTheLongFacesThatMeetsThemElsewhereIsNoEnd) {
+  // A neighbour's face west of the roof, rising east as the west end
+  // would, 3 m lower: its planes meet the long faces' at (0, 0, 5), far
+  // from its patch, which is no end of theirs.
+  std::vector<RoofPlaneHypothesis> roof = HippedRoof("");
+  RoofPlaneHypothesis beside = HippedRoof("w")[2];
+  beside.id = "beside";
+  const Eigen::Vector3d n = Eigen::Vector3d(-1, 0, 1).normalized();
+  beside.plane << n, -n.dot(Eigen::Vector3d(-6, 0, -1));
+  beside.patch = {{-7, -3}, {-6.2, -3}, {-6.2, 3}, {-7, 3}};
+  roof.push_back(beside);
+  EXPECT_TRUE(MirroredHipEnds(roof).empty());
+  // Without the test of where they meet it would be mirrored.
+  HipEndMirrorOptions anywhere;
+  anywhere.max_gap_m = 100;
+  anywhere.apex_max_dz_m = 100;
+  EXPECT_EQ(MirroredHipEnds(roof, anywhere).size(), 1u);
+}
+
 }  // namespace
 }  // namespace roofsweep

@@ -144,8 +144,17 @@ bool InConflict(const RoofPlaneHypothesis& p, const RoofPlaneHypothesis& q,
 // (GroupingOptions::conflict_cut_at_crease); empty when they do not meet so.
 Ring2 CutAtConvexCrease(const RoofPlaneHypothesis& q, const RoofPlaneHypothesis& p, double overlap,
                         const GroupingOptions& o) {
+  // A derived face has no supporting lines of its own; the lines it
+  // carries in plan were moved from the face it was derived from (a hip
+  // end mirrored along its ridge) and tell a face from a fragment as well.
+  int lines = q.lines;
+  double longest = q.longest_line_m;
+  if (q.derived) {
+    lines = std::max(lines, static_cast<int>(q.lines_xy.size()));
+    for (const auto& l : q.lines_xy) longest = std::max(longest, (l[1] - l[0]).norm());
+  }
   if (!o.conflict_cut_at_crease || overlap > o.conflict_meet_max_overlap ||
-      q.lines < o.conflict_cut_min_lines || q.longest_line_m < o.conflict_replace_min_line_m)
+      lines < o.conflict_cut_min_lines || longest < o.conflict_replace_min_line_m)
     return {};
   const auto meet = BorderBetween(q.plane, q.patch, p.plane, p.patch, o.virtual_min_angle_deg,
                                   o.conflict_meet_max_across);

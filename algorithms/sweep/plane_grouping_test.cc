@@ -410,6 +410,24 @@ TEST(PlaneGrouping, AHipEndIsCutAtItsHipRatherThanDroppedForTheLongFaceOverIt) {
   planes = {west, one_line};
   ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
   EXPECT_EQ(planes[0].id, "west");
+
+  // A derived hip end (MirroredHipEnds) has no supporting line but carries
+  // the mirrored lines of the end it came from; those tell a face as well.
+  RoofPlaneHypothesis derived = south;
+  derived.id = "derived";
+  derived.derived = true;
+  derived.lines = 0;
+  derived.longest_line_m = 0;
+  planes = {west, derived};
+  EXPECT_TRUE(ResolveConflicts(&planes, GroupingOptions{}).empty());
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_NEAR(std::abs(SignedArea(planes[1].patch)), 36 - 0.5 * 4.5 * 4.5, 1e-6);
+  // A found plane is held to its supporting lines.
+  RoofPlaneHypothesis unsupported = derived;
+  unsupported.derived = false;
+  planes = {west, unsupported};
+  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 1u);
+  EXPECT_EQ(planes[0].id, "west");
 }
 
 TEST(PlaneGrouping, AFlatPlaneUnderARidgeLineGivesWayToTheFacesThatHoldIt) {

@@ -756,6 +756,41 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
                           Since(t0)});
   }
 
+  // The hip end missing at one end of a ridge, from the one found at the
+  // other; after the growth along footprints, which takes the long faces to
+  // the footprint's ends and so gives the ridge's length. The conflicts are
+  // settled on a copy, and only the new ends are taken from it: settled
+  // again, the patches just grown along the footprints conflict anew, and
+  // on `hard-1` a face went that way whenever this stage ran, with nothing
+  // proposed.
+  if (r.hip_ends) {
+    t0 = Clock::now();
+    std::vector<RoofPlaneHypothesis> ends = MirroredHipEnds(roof_planes, r.hip_end);
+    const size_t proposed = ends.size();
+    size_t confirmed = 0, kept = 0;
+    if (!ends.empty()) {
+      SubProgress none(progress, 0.99, 0.99);
+      const std::vector<PlaneVerification> checks =
+          VerifyPlanes(block, images, ends, r.verify, none);
+      std::vector<RoofPlaneHypothesis> trial = roof_planes;
+      const size_t before = trial.size();
+      std::set<std::string> new_ids;
+      for (size_t k = 0; k < ends.size(); ++k)
+        if (checks[k].accepted) new_ids.insert(ends[k].id);
+      KeepVerified(std::move(ends), checks, &trial, &out.rejected, trace);
+      confirmed = trial.size() - before;
+      for (const std::string& why : ResolveConflicts(&trial, r.grouping))
+        if (new_ids.count(why.substr(0, why.find(": ")))) out.rejected.push_back(why);
+      for (RoofPlaneHypothesis& q : trial)
+        if (q.derived && new_ids.count(q.id)) roof_planes.push_back(std::move(q)), ++kept;
+    }
+    out.stages.push_back({"mirrored hip ends",
+                          StrFormat("%zu hip ends proposed at the other end of a ridge, %zu "
+                                    "confirmed, %zu kept in the conflicts",
+                                    proposed, confirmed, kept),
+                          Since(t0)});
+  }
+
   // One face fitted as two planes a few degrees apart: the merged plane
   // replaces both where the images confirm it about as well as the weaker
   // of the two. Two planes in a concave crease that it fits clearly worse

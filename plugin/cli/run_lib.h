@@ -106,6 +106,11 @@ struct RunRequest {
   // line proposes the face beyond the ridge, verified like any plane.
   bool mirror_faces = true;
   MirrorCompletionOptions mirror;
+  // Completion by symmetry along the ridge (MirroredHipEnds): a hip end
+  // proposes the one at the other end of its ridge, verified like any
+  // plane (height test included: no line fixes its height).
+  bool hip_ends = true;
+  HipEndMirrorOptions hip_end;
   // A second pass: image segments no 3D line explains are lifted onto the
   // planes the first pass kept (LiftSegmentsOntoPlanes), and the sweep,
   // grouping and verification run again over all lines.
