@@ -26,6 +26,17 @@ Eigen::Vector3d Gradient(const Eigen::Vector4d& plane) {
   return Eigen::Vector3d(-plane[0], -plane[1], -plane[3]) / plane[2];
 }
 
+// True when a plane whose normal lies within same_angle_deg of `normal`
+// covers at least same_cover of `patch` already.
+bool Covered(const std::vector<RoofPlaneHypothesis>& planes, const Eigen::Vector3d& normal,
+             const Ring2& patch, double same_angle_deg, double same_cover) {
+  for (const RoofPlaneHypothesis& q : planes)
+    if (q.plane.head<3>().dot(normal) >= std::cos(same_angle_deg * kDeg) &&
+        IntersectionArea(q.patch, patch) >= same_cover * SignedArea(patch))
+      return true;
+  return false;
+}
+
 // The level line where p meets a plane falling the other way beyond it
 // (see MirrorCompletionOptions::virtual_ridges), as a segment across p's
 // patch; of several such planes, the one whose line lies highest on p.
@@ -125,12 +136,7 @@ std::vector<RoofPlaneHypothesis> MirroredFaces(const std::vector<RoofPlaneHypoth
     Eigen::Vector3d m(-n.x(), -n.y(), n.z());
     // Keep the plane exactly through the ridge line at its level.
     const Eigen::Vector3d on(r.x(), r.y(), zr);
-    bool found = false;
-    for (const RoofPlaneHypothesis& q : planes) {
-      if (q.plane.head<3>().dot(m) < std::cos(o.same_angle_deg * kDeg)) continue;
-      found = found || IntersectionArea(q.patch, patch) >= o.same_cover * SignedArea(patch);
-    }
-    if (found) continue;
+    if (Covered(planes, m, patch, o.same_angle_deg, o.same_cover)) continue;
     RoofPlaneHypothesis q;
     q.plane << m, -m.dot(on);
     q.patch = std::move(patch);
@@ -237,12 +243,7 @@ std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypo
     const Eigen::Vector3d m(nh.x(), nh.y(), n.z());
     const Eigen::Vector2d cm = Reflect(c, on_mirror, along);
     const Eigen::Vector3d x(cm.x(), cm.y(), -(n.head<2>().dot(c) + end.plane[3]) / n.z());
-    bool found = false;
-    for (const RoofPlaneHypothesis& q : planes) {
-      if (q.plane.head<3>().dot(m) < std::cos(o.same_angle_deg * kDeg)) continue;
-      found = found || IntersectionArea(q.patch, patch) >= o.same_cover * SignedArea(patch);
-    }
-    if (found) continue;
+    if (Covered(planes, m, patch, o.same_angle_deg, o.same_cover)) continue;
     RoofPlaneHypothesis q;
     q.plane << m, -m.dot(x);
     q.patch = std::move(patch);
