@@ -250,13 +250,12 @@ std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypo
     q.score = 0;
     // No 3D line supports it (lines 0); in plan it carries the end's lines
     // mirrored, which lie on its hips and eave where the roof is
-    // symmetric: where the long faces run on over it, they let it meet
+    // symmetric. Where the long faces run on over it, they let it meet
     // them in the creases of its hips (GroupingOptions::
-    // conflict_cut_at_crease), and the verification's test away from its
-    // lines looks between them.
-    // The assembly asks a plane for a line of some length
-    // (AssemblyOptions::min_line_length_m): it gets that of the longest it
-    // carries, as a mirrored face gets its ridge's.
+    // conflict_cut_at_crease); the verification's test away from its
+    // lines looks between them; and the assembly, which asks a plane for a
+    // line of some length (AssemblyOptions::min_line_length_m), takes the
+    // longest of them, as it takes a mirrored face's ridge.
     for (const auto& l : end.lines_xy) {
       q.lines_xy.push_back({Reflect(l[0], on_mirror, along), Reflect(l[1], on_mirror, along)});
       q.longest_line_m = std::max(q.longest_line_m, (l[1] - l[0]).norm());
