@@ -651,17 +651,33 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
 
   // Every completion step below proposes planes that are verified like
   // the sweep's own, then settled in the conflicts with those kept so far;
-  // returns how many the verification confirmed.
+  // returns how many the verification confirmed. With `kept_new`, the
+  // conflicts are settled on a copy and only the proposals that stay are
+  // taken from it (how many: *kept_new): the planes kept so far are not
+  // decided again.
   auto add_verified = [&](std::vector<RoofPlaneHypothesis> proposals,
-                          const VerifyOptions* verify = nullptr) {
+                          const VerifyOptions* verify = nullptr, size_t* kept_new = nullptr) {
     SubProgress none(progress, 0.99, 0.99);
     const std::vector<PlaneVerification> checks =
         VerifyPlanes(block, images, proposals, verify ? *verify : r.verify, none);
-    const size_t before = roof_planes.size();
-    KeepVerified(std::move(proposals), checks, &roof_planes, &out.rejected, trace);
-    const size_t confirmed = roof_planes.size() - before;
-    const std::vector<std::string> conflicts = ResolveConflicts(&roof_planes, r.grouping);
-    out.rejected.insert(out.rejected.end(), conflicts.begin(), conflicts.end());
+    std::set<std::string> new_ids;
+    std::vector<RoofPlaneHypothesis> trial;
+    if (kept_new) {
+      for (size_t k = 0; k < proposals.size(); ++k)
+        if (checks[k].accepted) new_ids.insert(proposals[k].id);
+      trial = roof_planes;
+    }
+    std::vector<RoofPlaneHypothesis>& into = kept_new ? trial : roof_planes;
+    const size_t before = into.size();
+    KeepVerified(std::move(proposals), checks, &into, &out.rejected, trace);
+    const size_t confirmed = into.size() - before;
+    for (const std::string& why : ResolveConflicts(&into, r.grouping))
+      if (!kept_new || new_ids.count(why.substr(0, why.find(": ")))) out.rejected.push_back(why);
+    if (kept_new) {
+      *kept_new = 0;
+      for (RoofPlaneHypothesis& q : trial)
+        if (new_ids.count(q.id)) roof_planes.push_back(std::move(q)), ++*kept_new;
+    }
     return confirmed;
   };
 
@@ -768,22 +784,7 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     std::vector<RoofPlaneHypothesis> ends = MirroredHipEnds(roof_planes, r.hip_end);
     const size_t proposed = ends.size();
     size_t confirmed = 0, kept = 0;
-    if (!ends.empty()) {
-      SubProgress none(progress, 0.99, 0.99);
-      const std::vector<PlaneVerification> checks =
-          VerifyPlanes(block, images, ends, r.verify, none);
-      std::vector<RoofPlaneHypothesis> trial = roof_planes;
-      const size_t before = trial.size();
-      std::set<std::string> new_ids;
-      for (size_t k = 0; k < ends.size(); ++k)
-        if (checks[k].accepted) new_ids.insert(ends[k].id);
-      KeepVerified(std::move(ends), checks, &trial, &out.rejected, trace);
-      confirmed = trial.size() - before;
-      for (const std::string& why : ResolveConflicts(&trial, r.grouping))
-        if (new_ids.count(why.substr(0, why.find(": ")))) out.rejected.push_back(why);
-      for (RoofPlaneHypothesis& q : trial)
-        if (q.derived && new_ids.count(q.id)) roof_planes.push_back(std::move(q)), ++kept;
-    }
+    if (!ends.empty()) confirmed = add_verified(std::move(ends), nullptr, &kept);
     out.stages.push_back({"mirrored hip ends",
                           StrFormat("%zu hip ends proposed at the other end of a ridge, %zu "
                                     "confirmed, %zu kept in the conflicts",
