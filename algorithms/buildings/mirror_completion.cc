@@ -156,7 +156,10 @@ std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypo
                                                  const HipEndMirrorOptions& o) {
   // Uphill unit direction in plan of each plane in the slope range; zero
   // for the others.
+  // Their plan bounds grown by max_gap_m: only neighbours are measured
+  // (a city tile holds thousands of planes).
   std::vector<Eigen::Vector2d> up(planes.size(), Eigen::Vector2d::Zero());
+  std::vector<Eigen::Vector4d> box(planes.size());
   for (size_t i = 0; i < planes.size(); ++i) {
     const RoofPlaneHypothesis& p = planes[i];
     if (p.patch.size() < 3 || !(p.plane[2] > 0) || !(std::abs(SignedArea(p.patch)) > 1e-9))
@@ -164,9 +167,11 @@ std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypo
     const double slope = std::acos(std::min(1.0, p.plane[2]));
     if (slope < o.min_slope_deg * kDeg || slope > o.max_slope_deg * kDeg) continue;
     up[i] = Gradient(p.plane).head<2>().normalized();
+    box[i] = RingBounds(p.patch) + o.max_gap_m * Eigen::Vector4d(-1, -1, 1, 1);
   }
   const double cos_opposite = std::cos(o.opposite_max_turn_deg * kDeg);
   const double cos_end = std::cos(o.end_max_turn_deg * kDeg);
+  const double sin_end = std::sin(o.end_max_turn_deg * kDeg);
   std::vector<RoofPlaneHypothesis> out;
   for (size_t h = 0; h < planes.size(); ++h) {
     if (up[h].isZero()) continue;
@@ -176,9 +181,8 @@ std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypo
     // area.
     std::vector<size_t> beside;
     for (size_t i = 0; i < planes.size(); ++i)
-      if (i != h && !up[i].isZero() &&
-          std::abs(up[i].dot(up[h])) < std::sin(o.end_max_turn_deg * kDeg) &&
-          ConvexDistance(end.patch, planes[i].patch) <= o.max_gap_m)
+      if (i != h && !up[i].isZero() && std::abs(up[i].dot(up[h])) < sin_end &&
+          BoundsMeet(box[h], box[i]) && ConvexDistance(end.patch, planes[i].patch) <= o.max_gap_m)
         beside.push_back(i);
     double best_area = 0;
     std::pair<size_t, size_t> pair{0, 0};
