@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <utility>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/buildings/polygon2.h"
+#include "algorithms/core/error.h"
 #include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
@@ -70,7 +72,7 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     const Block& block, const std::vector<cv::Mat>& images,
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
     const std::vector<Segment3>& lines, const BareFootprintRoofOptions& o,
-    const VerifyOptions& verify, int* tried, int* beyond) {
+    const VerifyOptions& verify, int* tried, int* beyond, std::vector<int>* model_of) {
   // The bare footprints, then the parts beyond a ridge, each with the models
   // to try there.
   std::vector<Footprint> outlines;
@@ -144,13 +146,69 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
       model = sloped_of[j].second, height = z_sloped[j];
   }
   std::vector<RoofPlaneHypothesis> roofs;
+  if (model_of) model_of->clear();
   for (size_t k = 0; k < which.size(); ++k) {
     if (!std::isfinite(best[k].second.h)) continue;
     const RoofModel& m = which[k].second[best[k].first];
-    for (size_t face = 0; face < m.faces.size(); ++face)
+    for (size_t face = 0; face < m.faces.size(); ++face) {
       roofs.push_back(RoofModelFaceAt(outlines[which[k].first], m, face, best[k].second.h));
+      if (model_of) model_of->push_back(static_cast<int>(k));
+    }
   }
   return roofs;
+}
+
+int JudgeModelsWhole(const std::vector<int>& model_of, const VerifyOptions& o,
+                     std::vector<PlaneVerification>* checks, double min_z) {
+  using Test = PlaneVerification::Test;
+  std::vector<PlaneVerification>& v = *checks;
+  if (model_of.size() != v.size())
+    throw Error("JudgeModelsWhole: one model index per verification needed");
+  std::map<int, std::vector<size_t>> faces;
+  for (size_t i = 0; i < model_of.size(); ++i) faces[model_of[i]].push_back(i);
+  int accepted = 0;
+  for (const auto& [model, of] : faces) {
+    bool any_accepted = false, all_judged = true;
+    std::vector<size_t> refused;
+    for (const size_t i : of) {
+      if (v[i].accepted) {
+        any_accepted = true;
+        continue;
+      }
+      const bool weighable = v[i].failed == Test::kScore || v[i].failed == Test::kHeight ||
+                             v[i].failed == Test::kSlope;
+      // Not preferred at its height on its own samples, by a standard error
+      // at least: a wrong model's face (a gable over a shed) then stands on
+      // its sibling's evidence.
+      if (!weighable || !std::isfinite(v[i].score) ||
+          !(v[i].below_difference > min_z * v[i].below_se) ||
+          !(v[i].above_difference > min_z * v[i].above_se))
+        all_judged = false;
+      refused.push_back(i);
+    }
+    if (!any_accepted || refused.empty() || !all_judged) continue;
+    double n = 0, score = 0, below = 0, above = 0, tilt = 0, tilt_var = 0;
+    for (const size_t i : of) {
+      const double w = v[i].samples;
+      n += w, score += w * v[i].score, below += w * v[i].score_below;
+      above += w * v[i].score_above, tilt += w * v[i].tilt_difference;
+      tilt_var += w * w * v[i].tilt_se * v[i].tilt_se;
+    }
+    if (!(n > 0)) continue;
+    score /= n, below /= n, above /= n, tilt /= n;
+    const double tilt_se = std::sqrt(tilt_var) / n;
+    if (score < o.min_score || (o.height_test && score < std::max(below, above) + o.min_margin) ||
+        tilt < o.min_tilt_margin - o.tilt_z * tilt_se)
+      continue;
+    for (const size_t i : refused) {
+      v[i].accepted = true;
+      v[i].height_confirmed = true;
+      v[i].reason.clear();
+      v[i].failed = Test::kNone;
+      ++accepted;
+    }
+  }
+  return accepted;
 }
 
 }  // namespace roofsweep

@@ -617,6 +617,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
     PlaneVerification& v = out[i];
     if (p.patch.size() < 3 || !(std::abs(p.plane[2]) > 1e-3)) {
       v.reason = "degenerate patch";
+      v.failed = PlaneVerification::Test::kPatch;
       return;
     }
     // Small faces (dormers, hip ends, porches) hold few grid points at
@@ -642,6 +643,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       std::snprintf(buf, sizeof buf, "cannot be verified: %d textured samples < %d", at.n,
                     o.min_samples);
       v.reason = buf;
+      v.failed = PlaneVerification::Test::kSamples;
       return;
     }
     v.score = at.sum / at.n;
@@ -733,20 +735,24 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
       std::snprintf(buf, sizeof buf, "photometric score %.2f < %.2f over %d samples", v.score,
                     o.min_score, v.samples);
       v.reason = buf;
+      v.failed = PlaneVerification::Test::kScore;
     } else if (height_fails && !on_lines) {
       std::snprintf(buf, sizeof buf,
                     "height not confirmed: score %.2f, %.1f m %s %.2f (margin %.2f needed)",
                     v.score, v.offset_m, v.score_below > v.score_above ? "lower" : "higher",
                     std::max(v.score_below, v.score_above), o.min_margin);
       v.reason = buf;
+      v.failed = PlaneVerification::Test::kHeight;
     } else if (v.tilt_difference < o.min_tilt_margin - o.tilt_z * v.tilt_se) {
       std::snprintf(buf, sizeof buf,
                     "slope not confirmed: score %.2f, tilted by %.1f m at the edge %.2f (on the "
                     "same samples %+.3f, standard error %.3f)",
                     v.score, v.offset_m, v.score_tilted, v.tilt_difference, v.tilt_se);
       v.reason = buf;
+      v.failed = PlaneVerification::Test::kSlope;
     } else if (o.verify_off_lines && !height_fails) {
       v.reason = OffLineRefusal(block, grey, grid, p, {c.x(), c.y(), zc}, v.score, o);
+      if (!v.reason.empty()) v.failed = PlaneVerification::Test::kOffLines;
     }
     // The trimmed patch first: the ground test weighs the evidence where
     // the plane is seen, not the overshoot past its eaves, which is ground.
@@ -783,6 +789,7 @@ std::vector<PlaneVerification> VerifyPlanes(const Block& block, const std::vecto
                           "%.1f m lower",
                           plane_score, v.score_ground, zc - zg);
             v.reason = buf;
+            v.failed = PlaneVerification::Test::kGround;
           }
         }
       }

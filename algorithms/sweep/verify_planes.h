@@ -255,6 +255,10 @@ struct PlaneVerification {
   // (VerifyOptions::trim_patch); empty when nothing was cut.
   std::vector<Eigen::Vector2d> patch;
   std::string reason;  // why not accepted
+  // The test that refused it, for callers that weigh refusals differently
+  // (JudgeModelsWhole): kNone when accepted.
+  enum class Test { kNone, kPatch, kSamples, kScore, kHeight, kSlope, kOffLines, kGround };
+  Test failed = Test::kNone;
 };
 
 // Scores every patch over all views that see it. `images` as SweepHalfPlanes

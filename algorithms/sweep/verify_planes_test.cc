@@ -70,6 +70,7 @@ TEST(VerifyPlanes, TruePlaneIsConfirmedWrongHeightOrSlopeIsNot) {
   // beats it on the same samples by many standard errors (measured: -0.036,
   // standard error 0.002).
   EXPECT_EQ(v[2].reason.rfind("slope not confirmed", 0), 0u) << v[2].reason;
+  EXPECT_EQ(v[2].failed, PlaneVerification::Test::kSlope);
   EXPECT_LT(v[2].tilt_difference, -VerifyOptions{}.tilt_z * v[2].tilt_se);
   for (int k : {1, 2}) {
     EXPECT_FALSE(v[k].accepted) << k << ": score " << v[k].score << " below " << v[k].score_below
@@ -301,6 +302,8 @@ TEST(VerifyPlanes, HeightTheImagesCannotTellIsTakenFromALineAcrossTheBaseline) {
   EXPECT_FALSE(v[0].accepted);
   EXPECT_EQ(v[0].reason.rfind("height not confirmed", 0), 0u) << v[0].reason;
   EXPECT_GT(v[0].score, 0.6);  // the texture itself correlates well
+  EXPECT_EQ(v[0].failed, PlaneVerification::Test::kHeight);
+  EXPECT_EQ(v[1].failed, PlaneVerification::Test::kNone);
   // The verge crosses the baseline: accepted on its lines, and marked so.
   EXPECT_TRUE(v[1].accepted) << v[1].reason;
   EXPECT_FALSE(v[1].height_confirmed);
@@ -702,6 +705,7 @@ TEST(VerifyPlanes, PlaneOverRepeatingGroundTextureIsRefusedWhenTheGroundExplains
   ASSERT_EQ(v.size(), 2u);
   EXPECT_FALSE(v[0].accepted);
   EXPECT_EQ(v[0].reason.rfind("the ground explains the images as well", 0), 0u) << v[0].reason;
+  EXPECT_EQ(v[0].failed, PlaneVerification::Test::kGround);
   EXPECT_GE(v[0].score_ground, v[0].score - VerifyOptions{}.ground_margin);
   EXPECT_TRUE(v[1].accepted) << v[1].reason;
   ASSERT_TRUE(std::isfinite(v[1].score_ground));

@@ -34,7 +34,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   bool sweep_only = false;
   bool no_mirror = false, no_hip_ends = false, no_colour_breaks = false, no_growth = false,
        no_merge = false, no_lift = false, no_eaves = false, no_border_clip = false,
-       flat_only = false, no_beyond = false, no_pieces = false, no_lod1 = false;
+       flat_only = false, no_beyond = false, no_pieces = false, no_lod1 = false,
+       models_apart = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -118,6 +119,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "with footprints, keep a plane that spans several footprints whole: do not verify "
             "its piece over each footprint apart and cut away those the images refute (a face "
             "running on over a neighbour's roof)")
+      .Flag("-roof_model_faces_apart", &models_apart,
+            "with footprints, judge each face of a roof model over a footprint on its own: do "
+            "not accept a face refused on thin evidence when the model's faces together pass "
+            "(one face of a gable then stands alone, a shed over half the footprint)")
       .Flag("-no_roofs_beyond_ridges", &no_beyond,
             "with footprints, do not propose roof models over the part of a footprint beyond the "
             "top of the one sloped face found over it (the other side of a gable)")
@@ -162,6 +167,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.footprint_growth = !no_growth;
   r.roof_models_over_footprints = !flat_only;
   r.roofs_beyond_ridges = !no_beyond;
+  r.roof_models_whole = !models_apart;
   r.footprint_pieces = !no_pieces;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;

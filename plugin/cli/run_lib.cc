@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -655,11 +656,14 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   // conflicts are settled on a copy and only the proposals that stay are
   // taken from it (how many: *kept_new): the planes kept so far are not
   // decided again.
+  // `review` may overturn verdicts before they are applied.
   auto add_verified = [&](std::vector<RoofPlaneHypothesis> proposals,
-                          const VerifyOptions* verify = nullptr, size_t* kept_new = nullptr) {
+                          const VerifyOptions* verify = nullptr, size_t* kept_new = nullptr,
+                          const std::function<void(std::vector<PlaneVerification>*)>& review = {}) {
     SubProgress none(progress, 0.99, 0.99);
-    const std::vector<PlaneVerification> checks =
+    std::vector<PlaneVerification> checks =
         VerifyPlanes(block, images, proposals, verify ? *verify : r.verify, none);
+    if (review) review(&checks);
     std::set<std::string> new_ids;
     std::vector<RoofPlaneHypothesis> trial;
     if (kept_new) {
@@ -888,16 +892,22 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     model_verify.min_margin = r.roof_model_min_margin;
     std::vector<Segment3> segments;
     for (const Line3D& l : matched.lines) segments.push_back(l.segment);
-    int tried = 0, beyond = 0;
+    int tried = 0, beyond = 0, with_model = 0;
+    std::vector<int> model_of;
     std::vector<RoofPlaneHypothesis> roofs = RoofsOverBareFootprints(
-        block, images, roof_planes, footprints, segments, bo, r.verify, &tried, &beyond);
+        block, images, roof_planes, footprints, segments, bo, r.verify, &tried, &beyond, &model_of);
     const size_t proposed = roofs.size();
-    const size_t confirmed = add_verified(std::move(roofs), &model_verify);
-    out.stages.push_back({"roofs over bare footprints",
-                          StrFormat("%d of %zu footprints without a plane, %d beyond the ridge of "
-                                    "their one face: %zu faces proposed, %zu confirmed",
-                                    tried, footprints.size(), beyond, proposed, confirmed),
-                          Since(t0)});
+    const size_t confirmed = add_verified(
+        std::move(roofs), &model_verify, nullptr, [&](std::vector<PlaneVerification>* checks) {
+          if (r.roof_models_whole) with_model = JudgeModelsWhole(model_of, model_verify, checks);
+        });
+    out.stages.push_back(
+        {"roofs over bare footprints",
+         StrFormat("%d of %zu footprints without a plane, %d beyond the ridge of "
+                   "their one face: %zu faces proposed, %zu confirmed (%d with "
+                   "their model)",
+                   tried, footprints.size(), beyond, proposed, confirmed, with_model),
+         Since(t0)});
   }
 
   if (r.drop_eave_planes) {

@@ -88,6 +88,10 @@ struct RunRequest {
   // 45) building quality rose by 2.0 +- 0.6 points (14 up, 0 down) and
   // plane quality by 0.8 +- 0.4 (15 / 2).
   double roof_model_min_margin = 0.05;
+  // A model's faces refused by the score, height or slope test are
+  // accepted with the faces of it that passed when the model pooled passes
+  // (JudgeModelsWhole).
+  bool roof_models_whole = true;
   // With footprints: a sloped face seen over part of its footprint grows
   // along its contour lines by the strips of the footprint beyond its patch
   // that the verification confirms (ExtensionsAlongFootprints).
