@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/core/format.h"
 
 namespace roofsweep {
@@ -75,6 +76,26 @@ std::vector<RoofModel> RoofModelsOver(const Footprint& footprint, const RoofMode
       out.push_back({StrFormat("gable %.0f° with the ridge towards %s", s, Towards(along)),
                      {{a, Falling(across, hi, s)}, {b, Falling(-across, -lo, s)}}});
     }
+  // Hipped: each side's face is where its plane lies lowest (the roof is
+  // the lower envelope of the four), so its patch is the hull cut by the
+  // bisectors with the other three.
+  const std::vector<Eigen::Vector2d> sides = {t, -t, n, -n};
+  for (const double s : o.hip_slopes_deg) {
+    RoofModel hip{StrFormat("hipped %.0f°", s), {}};
+    for (size_t i = 0; i < sides.size(); ++i) {
+      const double wi = MaxAlong(hull, sides[i]);
+      Ring2 patch = hull;
+      for (size_t j = 0; j < sides.size() && patch.size() >= 3; ++j) {
+        if (j == i) continue;
+        // Lower than face j: wi - w_i . p <= wj - w_j . p.
+        const Eigen::Vector2d d = sides[j] - sides[i];
+        patch = ClipHalfPlane(patch, d.x(), d.y(), wi - MaxAlong(hull, sides[j]));
+      }
+      if (!big_enough(patch)) break;
+      hip.faces.push_back({patch, Falling(sides[i], wi, s)});
+    }
+    if (hip.faces.size() == sides.size()) out.push_back(std::move(hip));
+  }
   return out;
 }
 

@@ -16,6 +16,12 @@ struct RoofModelOptions {
   std::vector<double> shed_slopes_deg = {5, 7.5, 10, 15, 20, 30};
   // Gable roofs with the ridge along either axis of the rectangle.
   std::vector<double> gable_slopes_deg = {25, 30, 35, 40, 45};
+  // Hipped roofs: all four sides of the rectangle fall at one slope, the
+  // ridge along its long axis (a pyramid over a square). A third of the
+  // reference roofs of the `realistic` blocks are hipped or pavilion roofs;
+  // without this model a gable took their place over a bare footprint, its
+  // gable ends 2.5-3 m past the hips (`hard-1` s1 BLDG_0037, BLDG_0049).
+  std::vector<double> hip_slopes_deg = {25, 30, 35, 40, 45};
   // A face smaller than this (plan, m²) is no face: the model is left out.
   double min_face_m2 = 1.0;
 };
@@ -34,8 +40,9 @@ struct RoofModel {
 
 // Parametric roofs over a footprint, the way LoD2 production fits them
 // over cadastral outlines: flat, shed (falling to each side of the
-// footprint's rectangle, at each of shed_slopes_deg) and gable (ridge
-// along each axis, at each of gable_slopes_deg), eaves at height 0. The
+// footprint's rectangle, at each of shed_slopes_deg), gable (ridge
+// along each axis, at each of gable_slopes_deg) and hipped (every side
+// falling at each of hip_slopes_deg), eaves at height 0. The
 // rectangle is the one of least area whose side lies along an edge of the
 // footprint's hull; faces are the hull cut at the ridge. Only hypotheses:
 // the caller finds their heights and verifies each face against the images.

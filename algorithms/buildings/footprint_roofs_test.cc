@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "algorithms/buildings/convex_polygon2.h"
 
@@ -25,6 +27,7 @@ TEST(RoofModelsOver, FlatShedsAndGablesAlongTheFootprintsAxes) {
   RoofModelOptions opt;
   opt.shed_slopes_deg = {10};
   opt.gable_slopes_deg = {35};
+  opt.hip_slopes_deg = {};
   const std::vector<RoofModel> models = RoofModelsOver(f, opt);
   ASSERT_EQ(models.size(), 1u + 4 + 2);
   EXPECT_EQ(models[0].name, "flat");
@@ -69,6 +72,54 @@ TEST(RoofModelsOver, FlatShedsAndGablesAlongTheFootprintsAxes) {
   EXPECT_NEAR(ZAt(h.plane, at(5, 3)) - ZAt(models.back().faces[1].plane, at(5, 3)), 7.5, 1e-9);
   EXPECT_NE(h.id.find("over footprint F, face 2"), std::string::npos) << h.id;
   EXPECT_NEAR(h.longest_line_m, 10, 1e-9);
+}
+
+// A 10 x 6 m rectangle, hipped at 30°: two trapezoids along the long
+// sides and two triangular hip ends, meeting at a ridge 3 tan 30° high
+// that runs 4 m along the middle (the hips at 45° in plan).
+TEST(RoofModelsOver, HippedRoofFacesMeetAlongTheRidgeAndTheHips) {
+  Footprint f;
+  f.id = "H";
+  f.outline = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  RoofModelOptions opt;
+  opt.shed_slopes_deg = {};
+  opt.gable_slopes_deg = {};
+  opt.hip_slopes_deg = {30};
+  const std::vector<RoofModel> models = RoofModelsOver(f, opt);
+  ASSERT_EQ(models.size(), 2u);
+  const RoofModel& hip = models[1];
+  EXPECT_EQ(hip.name, "hipped 30°");
+  ASSERT_EQ(hip.faces.size(), 4u);
+  const double k = std::tan(30 * M_PI / 180);
+  std::vector<double> areas;
+  double total = 0;
+  for (const RoofModelFace& face : hip.faces) {
+    const double a = std::abs(SignedArea(face.patch));
+    areas.push_back(a);
+    total += a;
+    // Every face reaches the ridge's ends (3, 3) and (7, 3) or one of them,
+    // at the ridge's height, and no face's patch rises above it.
+    for (const auto& q : face.patch) EXPECT_LE(ZAt(face.plane, q), 3 * k + 1e-9);
+    const double z3 = ZAt(face.plane, {3, 3}), z7 = ZAt(face.plane, {7, 3});
+    EXPECT_TRUE(std::abs(z3 - 3 * k) < 1e-9 || std::abs(z7 - 3 * k) < 1e-9);
+    // Its eave lies on the footprint's outline, at height 0.
+    double lowest = 1e9;
+    for (const auto& q : face.patch) lowest = std::min(lowest, ZAt(face.plane, q));
+    EXPECT_NEAR(lowest, 0, 1e-9);
+  }
+  std::sort(areas.begin(), areas.end());
+  EXPECT_NEAR(areas[0], 9, 1e-9);  // hip ends: 6 x 3 / 2
+  EXPECT_NEAR(areas[1], 9, 1e-9);
+  EXPECT_NEAR(areas[2], 21, 1e-9);  // long faces: (10 + 4) / 2 x 3
+  EXPECT_NEAR(areas[3], 21, 1e-9);
+  EXPECT_NEAR(total, 60, 1e-9);
+  // Over a square the ridge shrinks to a point: a pyramid of four
+  // triangles.
+  f.outline = {{0, 0}, {6, 0}, {6, 6}, {0, 6}};
+  const std::vector<RoofModel> square = RoofModelsOver(f, opt);
+  ASSERT_EQ(square.size(), 2u);
+  for (const RoofModelFace& face : square[1].faces)
+    EXPECT_NEAR(std::abs(SignedArea(face.patch)), 9, 1e-9);
 }
 
 // A footprint too narrow for two faces of min_face_m2 gets no gable.

@@ -89,8 +89,10 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
       if (bare[r.footprint]) continue;
       outlines.push_back(std::move(r.part));
       model_options.push_back(o.model);
-      // The other face of a gable falls at the found face's slope.
+      // The other face of a gable falls at the found face's slope; a hipped
+      // roof over half a gable is no roof.
       model_options.back().shed_slopes_deg.push_back(r.face_slope_deg);
+      model_options.back().hip_slopes_deg.clear();
     }
   std::vector<ModelHeightSearch> searches;
   std::vector<std::pair<int, std::vector<RoofModel>>> which;

@@ -292,6 +292,13 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
   return std::max(o.candidate_floor_similarity, o.candidate_min_similarity * scale);
 }
 
+double ScoreThresholdAtImageQuality(double min_score, const std::vector<HalfPlane>& sides,
+                                    const SweepOptions& o) {
+  if (!(o.candidate_min_similarity > 0)) return min_score;
+  const double scale = CandidateThreshold(sides, o) / o.candidate_min_similarity;
+  return min_score * std::sqrt(std::clamp(scale, 0.0, 1.0));
+}
+
 std::vector<ViewTexture> PrepareViewTextures(const Block& block, const std::vector<cv::Mat>& images,
                                              const SweepOptions& options) {
   const int n_views = static_cast<int>(block.views.size());

@@ -82,6 +82,13 @@ inline int SideOf(const Segment3& line, const Eigen::Vector2d& p) {
 // (SweepOptions::calibration_peak_ratio).
 double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOptions& options);
 
+// A correlation threshold set for clear images (VerifyOptions::min_score)
+// at the image quality of these sides: scaled by the square root of the
+// scale CandidateThreshold applies, since Sim is a mean of squared
+// correlations. Never raised.
+double ScoreThresholdAtImageQuality(double min_score, const std::vector<HalfPlane>& sides,
+                                    const SweepOptions& options);
+
 // Sweeps both sides of every line: two results per line, at 2 i (side +1)
 // and 2 i + 1 (side -1). `images`: one per block view, CV_32FC3 RGB or
 // CV_32FC1 in [0, 1] (io's ReadImage), of the cameras' size. Parallel over

@@ -99,11 +99,17 @@ TEST(SweepHalfPlanes, TheCandidateThresholdFallsWithTheNoise) {
   SweepOptions fixed = o;
   fixed.calibration_peak_ratio = 0;
   EXPECT_FALSE(SideOf(Sweep(scene, block, fixed, eaves), 1).candidate);
-  // At the default noise the threshold stays the fixed one.
+  // The verification's score threshold falls with it, by the root.
+  const double scale = CandidateThreshold(r, o) / o.candidate_min_similarity;
+  EXPECT_LT(scale, 1.0);
+  EXPECT_NEAR(ScoreThresholdAtImageQuality(0.3, r, o), 0.3 * std::sqrt(scale), 1e-12);
+  EXPECT_EQ(ScoreThresholdAtImageQuality(0.3, r, fixed), 0.3);
+  // At the default noise the thresholds stay the fixed ones.
   scene.noise_sigma = TestScene().noise_sigma;
   const auto clean = Sweep(scene, block, o, eaves);
   EXPECT_TRUE(SideOf(clean, 1).accepted);
   EXPECT_FALSE(SideOf(clean, -1).candidate);
+  EXPECT_EQ(ScoreThresholdAtImageQuality(0.3, clean, o), 0.3);
 }
 
 // An untextured face gives no reliable maximum. The faces run on beyond the

@@ -35,7 +35,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   bool no_mirror = false, no_hip_ends = false, no_colour_breaks = false, no_growth = false,
        no_merge = false, no_lift = false, no_eaves = false, no_border_clip = false,
        flat_only = false, no_beyond = false, no_pieces = false, no_lod1 = false,
-       models_apart = false;
+       models_apart = false, fixed_verify_score = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -119,6 +119,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "with footprints, keep a plane that spans several footprints whole: do not verify "
             "its piece over each footprint apart and cut away those the images refute (a face "
             "running on over a neighbour's roof)")
+      .Flag("-fixed_verify_score", &fixed_verify_score,
+            "do not scale the verification's score threshold (-verify_score) by the block's "
+            "imagery as the sweep measured it (hazy, blurred or noisy images correlate less)")
       .Flag("-roof_model_faces_apart", &models_apart,
             "with footprints, judge each face of a roof model over a footprint on its own: do "
             "not accept a face refused on thin evidence when the model's faces together pass "
@@ -168,6 +171,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.roof_models_over_footprints = !flat_only;
   r.roofs_beyond_ridges = !no_beyond;
   r.roof_models_whole = !models_apart;
+  r.verify_follows_sweep = !fixed_verify_score;
   r.footprint_pieces = !no_pieces;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;

@@ -270,7 +270,10 @@ void WriteRunOutput(CityModel model, const std::string& block_crs, const RunRequ
 
 }  // namespace
 
-RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
+RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
+  // A copy: the verification's thresholds follow the block's imagery once
+  // the sweep has measured it (verify_follows_sweep).
+  RunRequest r = request;
   if (r.output.empty())
     throw Error(std::string(r.stop_after_sweep ? "sweep" : "run") + ": no output file given (-o)");
   for (const std::string& p : {r.output, r.lines3d, r.half_planes, r.planes, r.report})
@@ -438,6 +441,8 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
   };
   std::vector<HalfPlane> hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep",
                                      StrFormat("%d lines near the ground", near_ground), nullptr);
+  if (r.verify_follows_sweep && !r.stop_after_sweep)
+    r.verify.min_score = ScoreThresholdAtImageQuality(r.verify.min_score, hps, r.sweep);
 
   // §4 and §5: half-planes grouped into planes, every plane's patch
   // verified against all views that see it, then conflicts resolved by the
@@ -509,9 +514,9 @@ RunSummary RunPipeline(const RunRequest& r, Progress& progress) {
     rejected.insert(rejected.end(), settled.begin(), settled.end());
     out.stages.push_back(
         {std::string("verification") + pass,
-         StrFormat("%zu of %zu planes confirmed, %zu of them no roof (too low, too steep%s), "
-                   "%zu left after conflicts",
-                   n_verified, n_planes, refused.size(),
+         StrFormat("%zu of %zu planes confirmed (score >= %.2f), %zu of them no roof (too low, "
+                   "too steep%s), %zu left after conflicts",
+                   n_verified, n_planes, r.verify.min_score, refused.size(),
                    footprints.empty() ? "" : ", off the footprints", verified.size()),
          Since(t0)});
     if (final_pass) out.rejected.insert(out.rejected.end(), rejected.begin(), rejected.end());

@@ -66,6 +66,15 @@ struct RunRequest {
   bool line_planes = true;
   CoplanarOptions coplanar;
   VerifyOptions verify;
+  // The verification's score threshold (VerifyOptions::min_score) follows
+  // the block's imagery as the sweep's candidate threshold does
+  // (SweepOptions::calibration_peak_ratio): scaled by the square root of
+  // that threshold's scale, since Sim is a mean of squared correlations.
+  // Haze, blur, noise and low contrast lower the correlation of true faces:
+  // the median score of the planes built on `hard` is 0.48, on `realistic`
+  // 0.77-0.82, and over the 30 eval runs 41 reference planes with
+  // footprints were lost to that threshold alone, 33 of them on `hard`.
+  bool verify_follows_sweep = true;
   AssemblyOptions assembly;
   // With footprints: a footprint no plane covers gets a flat roof at the
   // height the views agree on best, if the verification confirms it.
