@@ -22,7 +22,8 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
               "neighbourhood of a line side in the reference view (default 100)")
       .Option(
           "-verify_score", &r.verify.min_score, "S",
-          "a roof plane's patch must correlate with mean Cor+ >= S over the views (default 0.3)")
+          "a roof plane's patch must correlate with mean Cor+ >= S over the views (default 0.3; "
+          "lowered for hazy, blurred or noisy images unless -fixed_verify_score)")
       .Option("-verify_margin", &r.verify.min_margin, "S",
               "... and beat the plane moved up and down by S (default 0.1)")
       .Option("-verify_samples", &r.verify.min_samples, "N",
