@@ -115,7 +115,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "by the strips of the footprint the images confirm")
       .Flag("-flat_bare_footprints", &flat_only,
             "with footprints, propose only flat roofs over footprints no plane covers (not the "
-            "shed and gable models)")
+            "shed, gable and hipped models)")
       .Flag("-no_footprint_pieces", &no_pieces,
             "with footprints, keep a plane that spans several footprints whole: do not verify "
             "its piece over each footprint apart and cut away those the images refute (a face "
