@@ -78,23 +78,28 @@ std::vector<RoofModel> RoofModelsOver(const Footprint& footprint, const RoofMode
     }
   // Hipped: each side's face is where its plane lies lowest (the roof is
   // the lower envelope of the four), so its patch is the hull cut by the
-  // bisectors with the other three.
-  const std::vector<Eigen::Vector2d> sides = {t, -t, n, -n};
+  // bisectors with the other three; at one slope for all four sides the
+  // patches do not depend on it.
+  if (o.hip_slopes_deg.empty()) return out;
+  const Eigen::Vector2d sides[4] = {t, -t, n, -n};
+  double reach[4];
+  for (int i = 0; i < 4; ++i) reach[i] = MaxAlong(hull, sides[i]);
+  std::vector<Ring2> patches;
+  for (int i = 0; i < 4; ++i) {
+    Ring2 patch = hull;
+    for (int j = 0; j < 4 && patch.size() >= 3; ++j) {
+      if (j == i) continue;
+      // Lower than face j: reach_i - w_i . p <= reach_j - w_j . p.
+      const Eigen::Vector2d d = sides[j] - sides[i];
+      patch = ClipHalfPlane(patch, d.x(), d.y(), reach[i] - reach[j]);
+    }
+    if (!big_enough(patch)) return out;
+    patches.push_back(std::move(patch));
+  }
   for (const double s : o.hip_slopes_deg) {
     RoofModel hip{StrFormat("hipped %.0f°", s), {}};
-    for (size_t i = 0; i < sides.size(); ++i) {
-      const double wi = MaxAlong(hull, sides[i]);
-      Ring2 patch = hull;
-      for (size_t j = 0; j < sides.size() && patch.size() >= 3; ++j) {
-        if (j == i) continue;
-        // Lower than face j: wi - w_i . p <= wj - w_j . p.
-        const Eigen::Vector2d d = sides[j] - sides[i];
-        patch = ClipHalfPlane(patch, d.x(), d.y(), wi - MaxAlong(hull, sides[j]));
-      }
-      if (!big_enough(patch)) break;
-      hip.faces.push_back({patch, Falling(sides[i], wi, s)});
-    }
-    if (hip.faces.size() == sides.size()) out.push_back(std::move(hip));
+    for (int i = 0; i < 4; ++i) hip.faces.push_back({patches[i], Falling(sides[i], reach[i], s)});
+    out.push_back(std::move(hip));
   }
   return out;
 }
