@@ -1026,6 +1026,120 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
 
 }  // namespace
 
+// A building as the assembly built it: the planes roofing it (indices into
+// the assembly's planes) and its outline.
+struct BuiltOutline {
+  std::vector<int> active;
+  Ring2 outline;
+};
+
+// Plan area of the pieces.
+double AreaOf(const std::vector<Ring2>& pieces) {
+  double a = 0;
+  for (const Ring2& r : pieces) a += std::abs(SignedArea(r));
+  return a;
+}
+
+// How much of the pieces the patches of `active` cover (each plane's share
+// summed, at most the pieces' area).
+double SeenOver(const std::vector<RoofPlaneHypothesis>& planes, const std::vector<int>& active,
+                const std::vector<Ring2>& pieces) {
+  double seen = 0;
+  for (const Ring2& r : pieces)
+    for (int i : active) seen += IntersectionArea(planes[i].patch, r);
+  return std::min(seen, AreaOf(pieces));
+}
+
+// See AssemblyOptions::max_building_overlap_m2. Buildings are compared in
+// their order, each loser rebuilt before the next pair is looked at, so the
+// result is deterministic.
+void SeparateOverlappingBuildings(const std::vector<RoofPlaneHypothesis>& planes,
+                                  const std::vector<int>& origin, const std::vector<Ring2>& grown,
+                                  const GroundModel& ground, const AssemblyOptions& o,
+                                  std::vector<BuiltOutline>* built,
+                                  std::vector<std::string>* join_key, AssemblyResult* res) {
+  std::vector<Building>& buildings = res->model.buildings;
+  std::vector<char> gone(buildings.size(), 0);
+  for (size_t a = 0; a < buildings.size(); ++a)
+    for (size_t b = a + 1; b < buildings.size() && !gone[a]; ++b) {
+      if (gone[b] || (!(*join_key)[a].empty() && (*join_key)[a] == (*join_key)[b])) continue;
+      BuiltOutline &A = (*built)[a], &B = (*built)[b];
+      if (!BoundsMeet(RingBounds(A.outline), RingBounds(B.outline))) continue;
+      const std::vector<Ring2> overlap = IntersectPolygons(A.outline, B.outline);
+      const double area = AreaOf(overlap);
+      if (!(area > o.max_building_overlap_m2)) continue;
+      const double seen_a = SeenOver(planes, A.active, overlap);
+      const double seen_b = SeenOver(planes, B.active, overlap);
+      if (!(std::abs(seen_a - seen_b) >= o.overlap_min_seen_margin * area)) continue;
+      const bool a_loses = seen_a < seen_b;
+      const size_t lose = a_loses ? a : b, win = a_loses ? b : a;
+      BuiltOutline& L = (*built)[lose];
+      Building& old = buildings[lose];
+      const std::string why = StrFormat(
+          "overlaps %s by %.1f m2 in plan, seen there over %.1f m2 against %.1f m2",
+          buildings[win].id.c_str(), area, a_loses ? seen_a : seen_b, a_loses ? seen_b : seen_a);
+      bool holed = false;
+      const Ring2 rest = LargestRing(
+          DifferencePolygons(L.outline, (*built)[win].outline, o.overlap_min_width_m, &holed));
+      // The other lies inside its outline (a lower annex in a courtyard, a
+      // tower over a wing): no outline without a hole is left, and the
+      // larger building is not given up for the smaller.
+      if (holed) continue;
+      std::vector<int> active = L.active;
+      std::optional<Building> rebuilt;
+      Envelope e;
+      while (rest.size() >= 3 && std::abs(SignedArea(rest)) >= o.min_footprint_m2 &&
+             !active.empty()) {
+        e = LowerEnvelope(planes, active, rest, grown, ground, o, o.min_support);
+        if (e.worst >= 0) {
+          active.erase(active.begin() + e.worst);
+          continue;
+        }
+        if (!std::isfinite(e.ground_z)) break;
+        Building nb = BuildSolid(planes, active, e, o);
+        nb.id = old.id;
+        nb.double_attributes["building_group"] = old.double_attributes.at("building_group");
+        if (CheckBuildingSolid(nb).Valid()) rebuilt = std::move(nb);
+        break;
+      }
+      if (!rebuilt && rest.size() >= 3 && std::abs(SignedArea(rest)) >= o.min_footprint_m2) {
+        // Left as it was: a building that cannot be rebuilt is better kept
+        // overlapping than lost.
+        res->rejected.push_back(old.id + ": " + why + "; could not be rebuilt without it");
+        continue;
+      }
+      for (int i : L.active) {
+        if (rebuilt && std::find(active.begin(), active.end(), i) != active.end()) continue;
+        if (res->plane_building[origin[i]] == old.id) {
+          res->plane_building[origin[i]].clear();
+          res->plane_reason[origin[i]] = old.id + ": " + why;
+        }
+      }
+      if (!rebuilt) {
+        res->rejected.push_back(old.id + ": " + why + ", less than " +
+                                StrFormat("%.1f m2 left", o.min_footprint_m2));
+        gone[lose] = 1;
+        continue;
+      }
+      res->rejected.push_back(old.id + ": " + why + ", built again without it");
+      old = std::move(*rebuilt);
+      L.active = std::move(active);
+      L.outline = e.outline;
+    }
+  std::vector<Building> kept_buildings;
+  std::vector<BuiltOutline> kept_built;
+  std::vector<std::string> kept_keys;
+  for (size_t k = 0; k < buildings.size(); ++k) {
+    if (gone[k]) continue;
+    kept_buildings.push_back(std::move(buildings[k]));
+    kept_built.push_back(std::move((*built)[k]));
+    kept_keys.push_back(std::move((*join_key)[k]));
+  }
+  buildings = std::move(kept_buildings);
+  *built = std::move(kept_built);
+  *join_key = std::move(kept_keys);
+}
+
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
                                  const GroundModel& ground, const AssemblyOptions& options,
                                  const std::vector<Footprint>& footprints) {
@@ -1125,6 +1239,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
   // Per building: the parts of one building share it (JoinParts); empty
   // when it stands alone.
   std::vector<std::string> join_key;
+  std::vector<BuiltOutline> built;  // per building: its planes and outline
   while (!groups.empty()) {
     const int root = groups.front().root;
     std::vector<int> members = std::move(groups.front().members);
@@ -1345,7 +1460,10 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
                              ? StrFormat("%.0f", b.double_attributes.at("building_group"))
                              : "");
     res.model.buildings.push_back(std::move(b));
+    built.push_back({active, env->outline});
   }
+  if (footprints.empty() && o.max_building_overlap_m2 > 0)
+    SeparateOverlappingBuildings(planes, origin, grown, ground, o, &built, &join_key, &res);
   if (footprints.empty() && o.join_gable_halves) JoinGableHalves(res.model.buildings, o, &join_key);
   JoinParts(join_key, !footprints.empty(), &res);
   // Input planes, not their pieces (cut at footprints or party walls).

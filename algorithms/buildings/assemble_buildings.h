@@ -246,6 +246,33 @@ struct AssemblyOptions {
   bool square_corners = true;
   double corner_min_side_m = 1.5;
   double corner_max_fill_m = 1.5;
+  // Without footprints: two buildings whose outlines overlap by more than
+  // this in plan (m²; 0: any overlap stays) are one roof over the other.
+  // Terraced houses whose heights differ by more than max_step_m are
+  // buildings of their own, and the convex hull of one house's patches
+  // reached over its neighbour wherever one of its lines did (the eaves of
+  // two houses 1.2 m apart in height as one 3D line): over the 30 eval runs
+  // from matched lines, 264 pairs of buildings overlapped by 2168 m², 72 m²
+  // a block. The building whose faces' patches cover less of the overlap
+  // (the images saw the other there) is built again over its outline less
+  // the other's, dropping the faces that no longer have support; it goes
+  // whole when less than min_footprint_m2 is left. The parts of one
+  // building (join_parts_per_group) overlap near their valley by design
+  // and are left alone.
+  double max_building_overlap_m2 = 1.0;
+  // ... when the other's faces were seen over at least this share of the
+  // overlap more than its own. Where both were seen there alike (their
+  // patches overlap: a face carried past a party wall over a roof at
+  // another height, two faces of one roof split into two buildings) the
+  // outlines say nothing of which roof is there, and the overlap stays: on
+  // the 30 eval runs such near-ties took 79 of 169 decisions, and in the
+  // nine that could be judged against the reference the smaller building
+  // (the first rule tried) was the right one to keep six times.
+  double overlap_min_seen_margin = 0.25;
+  // ... and what is left of its outline narrower than this is taken off
+  // with the overlap (the other's outline runs along its edge within
+  // centimetres, and a sliver 3 cm wide ran on 2.7 m past a house).
+  double overlap_min_width_m = 0.3;
   // Vertices closer than this are welded so that neighbouring faces share
   // them exactly.
   double weld_m = 1e-3;

@@ -493,6 +493,51 @@ TEST(AssembleBuildings, AHigherTerraceRowHiddenByTheHouseBesideItIsKept) {
   ExpectAllValid(r);
 }
 
+TEST(AssembleBuildings, OneHousesHullDoesNotRunOverItsLowerNeighbour) {
+  // Two terraced houses of 7 x 8 m, gables along x, the east one 1.2 m
+  // lower: buildings of their own. The west house's south face was found
+  // along an eave line that runs on over the east house's eave (collinear
+  // in every view), so its patch reaches x = 14 there; the hull of its
+  // patches then lays a triangle of 28 m² over the east house, which its
+  // own faces cover whole. The west house is built again without it.
+  const double ridge_z = 6 + 4 * std::tan(30 * M_PI / 180);
+  std::vector<RoofPlaneHypothesis> in = {
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, -90), {{0, 0}, {14, 0}, {7, 4}, {0, 4}}),
+      Hyp(SlopedPlane({0, 4, ridge_z}, 30, 90), {{0, 4}, {7, 4}, {7, 8}, {0, 8}}),
+      Hyp(SlopedPlane({7, 4, ridge_z - 1.2}, 30, -90), {{7, 0}, {14, 0}, {14, 4}, {7, 4}}),
+      Hyp(SlopedPlane({7, 4, ridge_z - 1.2}, 30, 90), {{7, 4}, {14, 4}, {14, 8}, {7, 8}})};
+  AssemblyResult r = AssembleBuildings(in, Flat(0));
+  std::vector<std::pair<double, double>> got;  // height, footprint
+  for (const Building& b : Solids(r)) {
+    EXPECT_EQ(b.roof_type, roof_type::kGabled) << b.id;
+    got.emplace_back(b.measured_height, b.double_attributes.at("footprint_m2"));
+  }
+  std::sort(got.begin(), got.end());
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_NEAR(got[0].first, ridge_z - 1.2, 1e-9);
+  EXPECT_NEAR(got[0].second, 56, 1e-4);  // Boost's overlay, to a tenth of a mm2
+  EXPECT_NEAR(got[1].first, ridge_z, 1e-9);
+  EXPECT_NEAR(got[1].second, 56, 1e-4);
+  EXPECT_TRUE(Mentions(r.rejected, "overlaps", "built again without it")) << r.rejected.size();
+  ExpectAllValid(r);
+  auto total_footprint = [](const AssemblyResult& r) {
+    double total = 0;
+    for (const Building& b : Solids(r)) total += b.double_attributes.at("footprint_m2");
+    return total;
+  };
+  // Left overlapping, the west house covers 28 m² of the east one's roof.
+  AssemblyOptions o;
+  o.max_building_overlap_m2 = 0;
+  EXPECT_NEAR(total_footprint(AssembleBuildings(in, Flat(0), o)), 112 + 28, 1e-6);
+  // Both west faces seen over the whole row as well: the images saw both
+  // roofs over the east house alike, and the overlap stays.
+  in[0].patch = ConvexHull({{0, 0}, {14, 0}, {14, 4}, {0, 4}});
+  in[1].patch = ConvexHull({{0, 4}, {14, 4}, {14, 8}, {0, 8}});
+  r = AssembleBuildings(in, Flat(0));
+  EXPECT_FALSE(Mentions(r.rejected, "overlaps", "built again")) << r.rejected.size();
+  EXPECT_NEAR(total_footprint(r), 112 + 56, 1e-6);
+}
+
 TEST(AssembleBuildings, TheOutlineFollowsTheBorderLines) {
   // The south face's patch stops 0.4 m short of its eave, the north face's
   // runs 0.6 m past it (into the garden); both eaves were matched as lines.
@@ -967,6 +1012,38 @@ TEST(Polygon2, IntersectNonConvex) {
   EXPECT_NEAR(IntersectionArea(sq, cw), 15, 1e-9);
   EXPECT_FALSE(RingSelfIntersects(l));
   EXPECT_TRUE(RingSelfIntersects({{0, 0}, {2, 2}, {2, 0}, {0, 2}}));
+}
+
+TEST(Polygon2, DifferenceWithoutSlivers) {
+  // b covers a's east half, its south edge 3 cm above a's: the difference
+  // keeps a strip 3 cm wide along a's south edge under b.
+  const Ring2 a = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  const Ring2 b = {{5, 0.03}, {12, 0.03}, {12, 7}, {5, 7}};
+  auto max_x = [](const std::vector<Ring2>& pieces) {
+    double m = -1e9;
+    for (const Ring2& r : pieces)
+      for (const auto& q : r) m = std::max(m, q.x());
+    return m;
+  };
+  const std::vector<Ring2> raw = DifferencePolygons(a, b);
+  ASSERT_EQ(raw.size(), 1u);
+  // Boost's overlay rounds to a tenth of a mm2.
+  EXPECT_NEAR(SignedArea(raw[0]), 30 + 5 * 0.03, 1e-4);
+  EXPECT_NEAR(max_x(raw), 10, 1e-6);
+  const std::vector<Ring2> opened = DifferencePolygons(a, b, 0.3);
+  ASSERT_EQ(opened.size(), 1u);
+  EXPECT_NEAR(SignedArea(opened[0]), 30, 1e-4);
+  EXPECT_NEAR(max_x(opened), 5, 1e-6);
+  // No overlap: a itself (counter-clockwise); a inside b: nothing.
+  EXPECT_NEAR(
+      SignedArea(DifferencePolygons(Ring2(a.rbegin(), a.rend()), {{20, 0}, {21, 0}, {21, 1}})[0]),
+      60, 1e-9);
+  bool holed = true;
+  EXPECT_TRUE(DifferencePolygons(a, {{-1, -1}, {11, -1}, {11, 7}, {-1, 7}}, 0, &holed).empty());
+  EXPECT_FALSE(holed);
+  // b inside a: a with a hole, which no piece is.
+  EXPECT_TRUE(DifferencePolygons(a, {{2, 2}, {4, 2}, {4, 4}, {2, 4}}, 0, &holed).empty());
+  EXPECT_TRUE(holed);
 }
 
 }  // namespace

@@ -107,6 +107,41 @@ std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b) {
   return out;
 }
 
+std::vector<Ring2> DifferencePolygons(const Ring2& a, const Ring2& b, double min_width,
+                                      bool* holed) {
+  std::vector<Ring2> out;
+  if (holed) *holed = false;
+  if (a.size() < 3) return out;
+  bg::model::multi_polygon<Polygon> pieces;
+  if (b.size() < 3)
+    pieces.push_back(ToBoost(a));
+  else
+    bg::difference(ToBoost(a), ToBoost(b), pieces);
+  if (min_width > 0 && !pieces.empty()) {
+    const bg::strategy::buffer::side_straight side;
+    const bg::strategy::buffer::join_miter join;
+    const bg::strategy::buffer::end_flat end;
+    const bg::strategy::buffer::point_square point;
+    bg::model::multi_polygon<Polygon> shrunk, opened;
+    bg::buffer(pieces, shrunk, bg::strategy::buffer::distance_symmetric<double>(-0.5 * min_width),
+               side, join, end, point);
+    if (!shrunk.empty())
+      bg::buffer(shrunk, opened, bg::strategy::buffer::distance_symmetric<double>(0.5 * min_width),
+                 side, join, end, point);
+    pieces = std::move(opened);
+  }
+  for (const Polygon& p : pieces) {
+    if (!p.inners().empty()) {
+      if (holed) *holed = true;
+      continue;
+    }
+    std::vector<Eigen::Vector2d> ring;
+    for (const Point& v : p.outer()) ring.emplace_back(v.x(), v.y());
+    AddPiece(ring, &out);
+  }
+  return out;
+}
+
 double IntersectionArea(const Ring2& a, const Ring2& b) {
   double area = 0;
   for (const Ring2& r : IntersectPolygons(a, b)) area += SignedArea(r);

@@ -30,6 +30,17 @@ double IntersectionArea(const Ring2& a, const Ring2& b);
 // empty when they do not overlap.
 Ring2 LargestIntersection(const Ring2& a, const Ring2& b);
 
+// The pieces of a \ b without holes (a piece of a with b inside it is
+// left out whole: a hole is no building outline), each counter-clockwise,
+// first vertex not repeated; a itself when they do not overlap. With
+// min_width > 0 the parts narrower than it are taken off (an opening:
+// shrunk and grown back by half of it, corners kept square): where a and b
+// share an edge to within centimetres, the difference leaves a sliver
+// along it.
+// `holed` (optional) is set when a piece was left out for a hole.
+std::vector<Ring2> DifferencePolygons(const Ring2& a, const Ring2& b, double min_width = 0,
+                                      bool* holed = nullptr);
+
 // True when p lies inside the ring (even-odd rule: either orientation,
 // not necessarily convex; InsideConvex assumes a convex ring).
 bool InsideRing(const Ring2& ring, const Eigen::Vector2d& p);
