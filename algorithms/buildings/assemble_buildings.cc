@@ -1031,6 +1031,7 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
 struct BuiltOutline {
   std::vector<int> active;
   Ring2 outline;
+  std::string name;  // "building hypothesis N", as the log names it (ids change when parts join)
 };
 
 // Plan area of the pieces.
@@ -1077,7 +1078,7 @@ void SeparateOverlappingBuildings(const std::vector<RoofPlaneHypothesis>& planes
       Building& old = buildings[lose];
       const std::string why = StrFormat(
           "overlaps %s by %.1f m2 in plan, seen there over %.1f m2 against %.1f m2",
-          buildings[win].id.c_str(), area, a_loses ? seen_a : seen_b, a_loses ? seen_b : seen_a);
+          (*built)[win].name.c_str(), area, a_loses ? seen_a : seen_b, a_loses ? seen_b : seen_a);
       bool holed = false;
       const Ring2 rest = LargestRing(
           DifferencePolygons(L.outline, (*built)[win].outline, o.overlap_min_width_m, &holed));
@@ -1105,23 +1106,23 @@ void SeparateOverlappingBuildings(const std::vector<RoofPlaneHypothesis>& planes
       if (!rebuilt && rest.size() >= 3 && std::abs(SignedArea(rest)) >= o.min_footprint_m2) {
         // Left as it was: a building that cannot be rebuilt is better kept
         // overlapping than lost.
-        res->rejected.push_back(old.id + ": " + why + "; could not be rebuilt without it");
+        res->rejected.push_back(L.name + ": " + why + "; could not be rebuilt without it");
         continue;
       }
       for (int i : L.active) {
         if (rebuilt && std::find(active.begin(), active.end(), i) != active.end()) continue;
         if (res->plane_building[origin[i]] == old.id) {
           res->plane_building[origin[i]].clear();
-          res->plane_reason[origin[i]] = old.id + ": " + why;
+          res->plane_reason[origin[i]] = L.name + ": " + why;
         }
       }
       if (!rebuilt) {
-        res->rejected.push_back(old.id + ": " + why + ", less than " +
+        res->rejected.push_back(L.name + ": " + why + ", less than " +
                                 StrFormat("%.1f m2 left", o.min_footprint_m2));
         gone[lose] = 1;
         continue;
       }
-      res->rejected.push_back(old.id + ": " + why + ", built again without it");
+      res->rejected.push_back(L.name + ": " + why + ", built again without it");
       old = std::move(*rebuilt);
       L.active = std::move(active);
       L.outline = e.outline;
@@ -1460,7 +1461,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
                              ? StrFormat("%.0f", b.double_attributes.at("building_group"))
                              : "");
     res.model.buildings.push_back(std::move(b));
-    built.push_back({active, env->outline});
+    built.push_back({active, env->outline, bname});
   }
   if (footprints.empty() && o.max_building_overlap_m2 > 0)
     SeparateOverlappingBuildings(planes, origin, grown, ground, o, &built, &join_key, &res);
