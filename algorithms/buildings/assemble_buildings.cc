@@ -1024,8 +1024,6 @@ void JoinParts(const std::vector<std::string>& key_of_building, bool footprint_k
     if (!pb.empty()) pb = renamed.at(pb);
 }
 
-}  // namespace
-
 // A building as the assembly built it: the planes roofing it (indices into
 // the assembly's planes) and its outline.
 struct BuiltOutline {
@@ -1140,6 +1138,8 @@ void SeparateOverlappingBuildings(const std::vector<RoofPlaneHypothesis>& planes
   *built = std::move(kept_built);
   *join_key = std::move(kept_keys);
 }
+
+}  // namespace
 
 AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
                                  const GroundModel& ground, const AssemblyOptions& options,
