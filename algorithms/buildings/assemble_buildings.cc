@@ -259,8 +259,7 @@ OverFootprints PatchOverFootprints(const Ring2& patch, const std::vector<Footpri
   for (size_t f = 0; f < footprints.size(); ++f) {
     if (!BoundsMeet(pb, bounds[f])) continue;
     std::vector<Ring2> pieces = IntersectPolygons(patch, footprints[f].outline);
-    double a = 0;
-    for (const Ring2& r : pieces) a += SignedArea(r);
+    const double a = AreaOfPieces(pieces);
     out.inside += a;
     if (a >= min_piece_m2) out.pieces.emplace_back(static_cast<int>(f), std::move(pieces));
   }
@@ -1032,13 +1031,6 @@ struct BuiltOutline {
   std::string name;  // "building hypothesis N", as the log names it (ids change when parts join)
 };
 
-// Plan area of the pieces.
-double AreaOf(const std::vector<Ring2>& pieces) {
-  double a = 0;
-  for (const Ring2& r : pieces) a += std::abs(SignedArea(r));
-  return a;
-}
-
 // How much of the pieces the patches of `active` cover (each plane's share
 // summed, at most the pieces' area).
 double SeenOver(const std::vector<RoofPlaneHypothesis>& planes, const std::vector<int>& active,
@@ -1046,7 +1038,7 @@ double SeenOver(const std::vector<RoofPlaneHypothesis>& planes, const std::vecto
   double seen = 0;
   for (const Ring2& r : pieces)
     for (int i : active) seen += IntersectionArea(planes[i].patch, r);
-  return std::min(seen, AreaOf(pieces));
+  return std::min(seen, AreaOfPieces(pieces));
 }
 
 // See AssemblyOptions::max_building_overlap_m2. Buildings are compared in
@@ -1065,7 +1057,7 @@ void SeparateOverlappingBuildings(const std::vector<RoofPlaneHypothesis>& planes
       BuiltOutline &A = (*built)[a], &B = (*built)[b];
       if (!BoundsMeet(RingBounds(A.outline), RingBounds(B.outline))) continue;
       const std::vector<Ring2> overlap = IntersectPolygons(A.outline, B.outline);
-      const double area = AreaOf(overlap);
+      const double area = AreaOfPieces(overlap);
       if (!(area > o.max_building_overlap_m2)) continue;
       const double seen_a = SeenOver(planes, A.active, overlap);
       const double seen_b = SeenOver(planes, B.active, overlap);

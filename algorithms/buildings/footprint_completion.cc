@@ -135,8 +135,7 @@ std::vector<FootprintBeyondRidge> FootprintsBeyondRidges(
     for (size_t i = 0; i < planes.size() && one; ++i) {
       if (!BoundsMeet(pb[i], b)) continue;
       const std::vector<Ring2> in = IntersectPolygons(planes[i].patch, outline);
-      double a = 0;
-      for (const Ring2& r : in) a += std::abs(SignedArea(r));
+      const double a = AreaOfPieces(in);
       if (a < std::max(2.0, o.min_face_fraction * area)) continue;
       if (face < 0) face = static_cast<int>(i);
       one = planes[i].plane.head<3>().dot(planes[face].plane.head<3>()) >= same;

@@ -142,10 +142,14 @@ std::vector<Ring2> DifferencePolygons(const Ring2& a, const Ring2& b, double min
   return out;
 }
 
-double IntersectionArea(const Ring2& a, const Ring2& b) {
+double AreaOfPieces(const std::vector<Ring2>& pieces) {
   double area = 0;
-  for (const Ring2& r : IntersectPolygons(a, b)) area += SignedArea(r);
+  for (const Ring2& r : pieces) area += std::abs(SignedArea(r));
   return area;
+}
+
+double IntersectionArea(const Ring2& a, const Ring2& b) {
+  return AreaOfPieces(IntersectPolygons(a, b));
 }
 
 Ring2 LargestIntersection(const Ring2& a, const Ring2& b) {

@@ -24,6 +24,9 @@ bool BoundsMeet(const Eigen::Vector4d& a, const Eigen::Vector4d& b);
 // Two convex rings are clipped exactly by IntersectConvex, others by Boost.
 std::vector<Ring2> IntersectPolygons(const Ring2& a, const Ring2& b);
 
+// Total plan area of pieces (m², either orientation).
+double AreaOfPieces(const std::vector<Ring2>& pieces);
+
 // Area of a ∩ b (m²).
 double IntersectionArea(const Ring2& a, const Ring2& b);
 // The largest piece of a ∩ b (the first of equal ones), counter-clockwise;
