@@ -1313,8 +1313,13 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
       }
       if (whole[f] == 0) {
         whole[f] = -1;
-        Envelope e = LowerEnvelope(planes, planes_over[f], fp->outline, grown, ground, o,
-                                   o.footprint_min_support);
+        const bool one_flat =
+            planes_over[f].size() == 1 &&
+            std::abs(planes[planes_over[f][0]].plane.head<3>().normalized().z()) >=
+                std::cos(o.footprint_flat_max_slope_deg * M_PI / 180);
+        Envelope e =
+            LowerEnvelope(planes, planes_over[f], fp->outline, grown, ground, o,
+                          one_flat ? o.footprint_flat_min_support : o.footprint_min_support);
         if (e.worst < 0 && std::isfinite(e.ground_z))
           solid = BuildSolid(planes, planes_over[f], e, o);
         if (solid && CheckBuildingSolid(*solid).Valid()) {

@@ -200,6 +200,14 @@ struct AssemblyOptions {
   // not become a shed roof over all of it; faces seen on both sides are
   // covered 0.9-1.
   double footprint_min_support = 0.75;
+  // ... except for a footprint whose one plane is (nearly) horizontal, at
+  // most footprint_flat_max_slope_deg: a flat roof has no other side that
+  // its extension could hide, and it covers its building whole. It then
+  // needs footprint_flat_min_support only. Flat roofs of one weak texture
+  // (a green roof beside a lawn, bitumen) are seen where their structures
+  // are, and the building was built over that part of its footprint alone.
+  double footprint_flat_max_slope_deg = 5.0;
+  double footprint_flat_min_support = 0.3;
   // With footprints: the solids built over one footprint become the parts
   // of one building (CityGML BuildingParts) with the footprint's id and the
   // attributes of the whole (building_parts, summed roof_planes,

@@ -813,6 +813,31 @@ TEST(AssembleBuildingsFootprints, OneSideOfAGableIsNotAShedOverTheWholeFootprint
   ExpectAllValid(r);
 }
 
+TEST(AssembleBuildingsFootprints, AFlatRoofSeenOverPartOfItsFootprintCoversItWhole) {
+  // A green roof seen where its structures are: 4 of its 10 m depth.
+  const Ring2 seen = {{0.5, 0.5}, {9.5, 0.5}, {9.5, 4}, {0.5, 4}};
+  const Ring2 outline = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const AssemblyResult flat =
+      AssembleBuildings({Hyp({0, 0, 1, -6}, seen)}, Flat(0), {}, {Fp("f", outline)});
+  ASSERT_EQ(flat.model.buildings.size(), 1u);
+  EXPECT_EQ(flat.model.buildings[0].string_attributes.at("outline"), "footprint");
+  EXPECT_NEAR(flat.model.buildings[0].double_attributes.at("footprint_m2"), 100, 1e-9);
+  ExpectAllValid(flat);
+  // The same patch of a 20 deg shed is not carried over the rest.
+  const AssemblyResult shed = AssembleBuildings({Hyp(SlopedPlane({0, 0, 6}, 20, 90), seen)},
+                                                Flat(0), {}, {Fp("s", outline)});
+  ASSERT_EQ(shed.model.buildings.size(), 1u);
+  EXPECT_EQ(shed.model.buildings[0].string_attributes.at("outline"),
+            "roof planes cut at the footprint");
+  EXPECT_LT(shed.model.buildings[0].double_attributes.at("footprint_m2"), 50);
+  // Nor is a flat plane seen over less than footprint_flat_min_support.
+  const AssemblyResult small =
+      AssembleBuildings({Hyp({0, 0, 1, -6}, {{0.5, 0.5}, {9.5, 0.5}, {9.5, 1.5}, {0.5, 1.5}})},
+                        Flat(0), {}, {Fp("t", outline)});
+  ASSERT_EQ(small.model.buildings.size(), 1u);
+  EXPECT_LT(small.model.buildings[0].double_attributes.at("footprint_m2"), 50);
+}
+
 TEST(AssembleBuildingsFootprints, EveryPlaneAndFootprintEndsSomewhere) {
   std::vector<RoofPlaneHypothesis> planes = Gable();
   planes.push_back(Hyp({0, 0, 1, -6}, {{50, 50}, {60, 50}, {60, 60}, {50, 60}}));
