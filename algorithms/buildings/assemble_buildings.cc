@@ -17,6 +17,7 @@
 #include "algorithms/buildings/right_corners.h"
 #include "algorithms/buildings/solid_check.h"
 #include "algorithms/core/format.h"
+#include "algorithms/geometry/slope.h"
 
 namespace roofsweep {
 namespace {
@@ -1315,8 +1316,7 @@ AssemblyResult AssembleBuildings(const std::vector<RoofPlaneHypothesis>& input,
         whole[f] = -1;
         const bool one_flat =
             planes_over[f].size() == 1 &&
-            std::abs(planes[planes_over[f][0]].plane.head<3>().normalized().z()) >=
-                std::cos(o.footprint_flat_max_slope_deg * M_PI / 180);
+            SlopeDeg(planes[planes_over[f][0]].plane.head<3>()) <= o.footprint_flat_max_slope_deg;
         Envelope e =
             LowerEnvelope(planes, planes_over[f], fp->outline, grown, ground, o,
                           one_flat ? o.footprint_flat_min_support : o.footprint_min_support);
