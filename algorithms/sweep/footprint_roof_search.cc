@@ -10,6 +10,7 @@
 #include "algorithms/buildings/footprint_completion.h"
 #include "algorithms/buildings/polygon2.h"
 #include "algorithms/core/error.h"
+#include "algorithms/geometry/slope.h"
 #include "algorithms/sweep/plane_fit.h"
 
 namespace roofsweep {
@@ -23,6 +24,13 @@ ModelHeightSearch SearchOf(const RoofModel& m, double lo, double hi) {
   }
   h.h_lo = lo, h.h_hi = hi;
   return h;
+}
+
+// A shed at the slope of the one face found beyond whose ridge it lies
+// (NaN: a bare footprint, none is).
+bool IsAtFaceSlope(const RoofModel& m, double face_slope_deg) {
+  return m.faces.size() == 1 &&
+         std::abs(SlopeDeg(m.faces[0].plane.head<3>()) - face_slope_deg) < 0.5;
 }
 
 }  // namespace
@@ -68,6 +76,22 @@ std::vector<std::pair<double, double>> SlopedModelWindows(double flat_h, double 
   return windows;
 }
 
+int ChooseRoofModel(double flat_score, const std::vector<ScoredRoofModel>& sloped, double min_gain,
+                    double prefer_face_slope) {
+  int best = -1, mirror = -1;
+  for (size_t j = 0; j < sloped.size(); ++j) {
+    const double s = sloped[j].score;
+    if (!std::isfinite(s) || !(s >= flat_score + min_gain)) continue;
+    if (best < 0 || s > sloped[best].score) best = static_cast<int>(j);
+    if (sloped[j].at_face_slope && (mirror < 0 || s > sloped[mirror].score))
+      mirror = static_cast<int>(j);
+  }
+  if (mirror >= 0 && prefer_face_slope > 0 &&
+      sloped[mirror].score >= sloped[best].score - prefer_face_slope)
+    return mirror;
+  return best;
+}
+
 std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
     const Block& block, const std::vector<cv::Mat>& images,
     const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
@@ -77,10 +101,14 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
   // to try there.
   std::vector<Footprint> outlines;
   std::vector<RoofModelOptions> model_options;
+  // The slope of the one face found over a part beyond a ridge; NaN for a
+  // bare footprint.
+  std::vector<double> face_slope;
   std::vector<char> bare(footprints.size(), 0);
   for (int f : BareFootprints(planes, footprints)) {
     outlines.push_back(footprints[f]);
     model_options.push_back(o.model);
+    face_slope.push_back(std::numeric_limits<double>::quiet_NaN());
     bare[f] = 1;
   }
   const size_t n_bare = outlines.size();
@@ -93,6 +121,7 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
       // roof over half a gable is no roof.
       model_options.back().shed_slopes_deg.push_back(r.face_slope_deg);
       model_options.back().hip_slopes_deg.clear();
+      face_slope.push_back(r.face_slope_deg);
     }
   std::vector<ModelHeightSearch> searches;
   std::vector<std::pair<int, std::vector<RoofModel>>> which;
@@ -138,14 +167,20 @@ std::vector<RoofPlaneHypothesis> RoofsOverBareFootprints(
   }
   const std::vector<ModelHeight> z_sloped = BestModelHeights(block, images, sloped, verify);
   // Per footprint entry: the model chosen and its height.
+  std::vector<std::vector<size_t>> searches_of(which.size());
+  for (size_t j = 0; j < sloped.size(); ++j) searches_of[sloped_of[j].first].push_back(j);
   std::vector<std::pair<size_t, ModelHeight>> best(which.size(), {0, ModelHeight{}});
-  for (size_t k = 0; k < which.size(); ++k) best[k].second = z_flat[k];
-  for (size_t j = 0; j < sloped.size(); ++j) {
-    const size_t k = sloped_of[j].first;
-    auto& [model, height] = best[k];
-    if (std::isfinite(z_sloped[j].score) && z_sloped[j].score >= z_flat[k].score + o.min_gain &&
-        !(z_sloped[j].score <= height.score))
-      model = sloped_of[j].second, height = z_sloped[j];
+  for (size_t k = 0; k < which.size(); ++k) {
+    best[k].second = z_flat[k];
+    std::vector<ScoredRoofModel> scored;
+    for (size_t j : searches_of[k])
+      scored.push_back({z_sloped[j].score, IsAtFaceSlope(which[k].second[sloped_of[j].second],
+                                                         face_slope[which[k].first])});
+    const int c = ChooseRoofModel(z_flat[k].score, scored, o.min_gain, o.prefer_face_slope);
+    if (c >= 0) {
+      const size_t j = searches_of[k][c];
+      best[k] = {sloped_of[j].second, z_sloped[j]};
+    }
   }
   std::vector<RoofPlaneHypothesis> roofs;
   if (model_of) model_of->clear();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <opencv2/core.hpp>
 #include <utility>
 #include <vector>
@@ -36,6 +37,13 @@ struct BareFootprintRoofOptions {
   // quality by 0.38 +- 0.14 (10 / 3), correctness -0.21 +- 0.14.
   bool beyond_ridges = true;
   BeyondRidgeOptions beyond;
+  // Beyond a ridge, a shed at the found face's slope (its mirror image: most
+  // pitched roofs are symmetric) is taken over a better scoring sloped model
+  // unless that one scores more than this higher (mean Cor+; 0: the best
+  // scoring one). Where tile courses run along the baselines the images tell
+  // slopes apart poorly: on `easy-1` a 30° shed beat the mirror of a gable's
+  // 40.3° face by a hair on every matching seed.
+  double prefer_face_slope = 0.05;
   // The sloped models are also searched at the heights of the 3D lines over
   // the footprint (LineHeightSpan) where those contradict the flat roof's
   // best height (SlopedModelWindows): over a steep roof no flat plane fits,
@@ -62,6 +70,21 @@ std::pair<double, double> LineHeightSpan(const Ring2& outline, const std::vector
 std::vector<std::pair<double, double>> SlopedModelWindows(double flat_h, double rise, double h_min,
                                                           double h_max,
                                                           std::pair<double, double> line_span);
+
+// One sloped roof model over a footprint as the height search scored it.
+struct ScoredRoofModel {
+  double score = std::numeric_limits<double>::quiet_NaN();  // mean Cor+; NaN: none
+  // A shed at the slope of the one face found, over the part of a
+  // footprint beyond that face's ridge.
+  bool at_face_slope = false;
+};
+
+// The model taken over one footprint: the index of the sloped model that
+// scores best, among those that beat the flat roof's score by min_gain, or
+// -1 for the flat roof. Beyond a ridge the best one at the face's slope
+// instead, when it scores within prefer_face_slope of that (0: never).
+int ChooseRoofModel(double flat_score, const std::vector<ScoredRoofModel>& sloped, double min_gain,
+                    double prefer_face_slope);
 
 // Roof hypotheses over the footprints that no plane covers
 // (BareFootprints), and over the parts of footprints beyond the one face

@@ -109,6 +109,27 @@ TEST(RoofsOverBareFootprints, GableAtTheHeightOfItsLines) {
   }
 }
 
+// Beyond the ridge of a gable's one face found at 40°: sheds at 30° (not
+// the face's slope) and at 40° (its mirror image) over the other half, the
+// flat roof at 0.70 (`easy-1` BLDG_0031: the 30° shed won by a hair).
+TEST(ChooseRoofModel, TheFacesMirrorImageUnlessAnotherSlopeIsClearlyBetter) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const ScoredRoofModel shed30{0.85, false}, unscored{nan, true};
+  // Within 0.05 of the best: the mirror.
+  EXPECT_EQ(ChooseRoofModel(0.70, {shed30, unscored, {0.82, true}}, 0.05, 0.05), 2);
+  // Without the preference, or further behind: the best.
+  EXPECT_EQ(ChooseRoofModel(0.70, {shed30, {0.82, true}}, 0.05, 0.0), 0);
+  EXPECT_EQ(ChooseRoofModel(0.70, {shed30, {0.79, true}}, 0.05, 0.05), 0);
+  // The mirror must beat the flat roof as any sloped model must.
+  EXPECT_EQ(ChooseRoofModel(0.78, {shed30, {0.82, true}}, 0.05, 0.05), 0);
+  // Nothing beats the flat roof by min_gain: the flat roof.
+  EXPECT_EQ(ChooseRoofModel(0.70, {{0.74, false}, {0.72, true}, unscored}, 0.05, 0.05), -1);
+  EXPECT_EQ(ChooseRoofModel(nan, {shed30}, 0.05, 0.05), -1);
+  EXPECT_EQ(ChooseRoofModel(0.70, {}, 0.05, 0.05), -1);
+  // A bare footprint has no face slope: the best.
+  EXPECT_EQ(ChooseRoofModel(0.70, {{0.80, false}, {0.90, false}}, 0.05, 0.05), 1);
+}
+
 // A verdict as VerifyPlanes gives it: Cor+ `score` over n samples, `moved`
 // when moved up and down (and tilted), the paired differences as those.
 PlaneVerification Verdict(double score, int n, double moved, PlaneVerification::Test failed) {
