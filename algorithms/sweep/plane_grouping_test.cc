@@ -704,6 +704,24 @@ TEST(PlaneGrouping, AVirtualLineWithANeighbourCountsAsASecondLine) {
   }
 }
 
+// A hip end's rectangular patch runs across the hip into the long face:
+// the hip cuts a corner off it. Here the end (falling east, eaves at
+// x = 10) has a quarter of its patch across the hip, the long face (falling
+// south, eaves at y = 0) an eighth: they meet along it (`realistic-7`
+// BLDG_0022, whose two hip ends went as orphans on every seed).
+TEST(PlaneGrouping, AHipEndMeetsTheLongFaceAcrossACornerOfItsPatch) {
+  const double t = std::tan(35 * M_PI / 180);
+  const PlaneGroup end = OneLinePlane(1, 8, 0, 10, 4, 10 * t, -t, 0);
+  const PlaneGroup face = OneLinePlane(2, 0, 0, 9, 4, 0, 0, t);
+  GroupingOptions o;
+  EXPECT_TRUE(VirtualLine(end, face, o));
+  EXPECT_TRUE(VirtualLine(face, end, o));
+  // Half of the end's patch across: a plane through the other, not beside it.
+  EXPECT_FALSE(VirtualLine(OneLinePlane(1, 6, 0, 10, 4, 10 * t, -t, 0), face, o));
+  o.virtual_max_across = 0.2;
+  EXPECT_FALSE(VirtualLine(end, face, o));
+}
+
 TEST(PlaneGrouping, APlaneWhoseVirtualLinePartnerIsRejectedGoesToo) {
   // The gable of the test above as roof planes: a one-line face and a
   // three-line face meeting at the ridge, and a one-line plane 30 m away
