@@ -3,6 +3,8 @@
 #include <vector>
 
 #include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/buildings/footprint.h"
+#include "algorithms/buildings/footprint_completion.h"
 
 namespace roofsweep {
 
@@ -104,5 +106,59 @@ struct HipEndMirrorOptions {
 // Deterministic.
 std::vector<RoofPlaneHypothesis> MirroredHipEnds(const std::vector<RoofPlaneHypothesis>& planes,
                                                  const HipEndMirrorOptions& options = {});
+
+// Options of FacesMirroredAcrossFootprints. Angles in degrees, lengths in
+// metres.
+struct FootprintMirrorOptions {
+  // Faces in this slope range are mirrored. A flat face mirrors onto its
+  // own plane; 75° takes in the steep lower faces of a mansard (60-72°),
+  // whose top is no ridge that MirroredFaces could mirror them about.
+  double min_slope_deg = 5.0;
+  double max_slope_deg = 75.0;
+  // An axis of the footprint: through its centroid along its longest edge
+  // or across it, when the footprint reflected across it covers at least
+  // min_symmetry of itself (a rectangle; not an L).
+  double min_symmetry = 0.95;
+  // The face lies over the footprint: at least min_inside of its patch.
+  double min_inside = 0.8;
+  // The face falls across the axis, away from it (its downhill direction
+  // in plan within max_turn_deg of the axis's normal, pointing away), and
+  // its patch's centroid lies at least min_offset_m from the axis (a face
+  // across the axis, a shed over the whole footprint, is its own mirror
+  // image).
+  double max_turn_deg = 20.0;
+  double min_offset_m = 0.5;
+  // As MirrorCompletionOptions: no proposal where a plane within
+  // same_angle_deg covers same_cover of the mirrored patch already, nor for
+  // mirrored patches under min_patch_m2.
+  double same_angle_deg = 5.0;
+  double same_cover = 0.5;
+  double min_patch_m2 = 1.0;
+  // A footprint that holds one sloped face (FootprintsBeyondRidges with
+  // `beyond`) is left to the roof models beyond its ridge
+  // (RoofsOverBareFootprints), which roof the whole part beyond it: the
+  // mirror image of a partial face covers only as much as the face, and on
+  // `realistic-23` a gable so completed covered too little of its
+  // footprint to be matched. False where those models do not run.
+  bool leave_one_face = true;
+  BeyondRidgeOptions beyond;
+};
+
+// Completion by the footprint's symmetry: a house on a rectangular
+// footprint is mostly symmetric about its axes, the faces on one side
+// mirror images of those on the other. MirroredFaces mirrors a face about
+// its own ridge and MirroredHipEnds a hip end along its ridge; neither
+// reaches the faces of a mansard, whose steep lower faces meet no ridge and
+// whose shallow upper ones (10-22°) are too flat for them, and these were
+// where the vertex error with footprints came from (sweep README, session
+// 77). Each face over a symmetric footprint that falls across one of its
+// axes proposes its mirror image across that axis's vertical plane: the
+// normal and the patch reflected, the height kept, the face's plan lines
+// mirrored. A proposal is a hypothesis only (derived): the caller verifies
+// it photometrically, and in conflicts it yields to every plane found
+// directly. Ids say where a proposal comes from. Deterministic.
+std::vector<RoofPlaneHypothesis> FacesMirroredAcrossFootprints(
+    const std::vector<RoofPlaneHypothesis>& planes, const std::vector<Footprint>& footprints,
+    const FootprintMirrorOptions& options = {});
 
 }  // namespace roofsweep

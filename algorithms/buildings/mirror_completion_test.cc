@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "algorithms/buildings/convex_polygon2.h"
+#include "algorithms/buildings/test_planes.h"
 
 namespace roofsweep {
 namespace {
@@ -233,4 +234,116 @@ TEST(MirroredHipEnds, AFaceBesideTheLongFacesThatMeetsThemElsewhereIsNoEnd) {
 }
 
 }  // namespace
+// A mansard on a 10 x 8 m footprint (x along its length): steep lower
+// faces (65 deg) 1.5 m deep from the eaves at z = 6 to the break at
+// z = 9.22, shallow upper faces above. Its steep south face.
+RoofPlaneHypothesis MansardSouthLowerFace() {
+  RoofPlaneHypothesis p = TestPlane(SlopedPlane({5, 0, 6}, 65, -90),
+                                    {{0, 0}, {10, 0}, {8.5, 1.5}, {1.5, 1.5}}, "south lower");
+  p.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 0)}};
+  p.similarity = 0.6;
+  return p;
+}
+
+const Ring2 kRectangle = {{0, 0}, {10, 0}, {10, 8}, {0, 8}};
+
+// The tests of one face alone: not left to the roof models beyond a ridge.
+FootprintMirrorOptions AnyFace() {
+  FootprintMirrorOptions o;
+  o.leave_one_face = false;
+  return o;
+}
+
+TEST(FacesMirroredAcrossFootprints, AMansardsSteepFaceProposesTheOneOppositeIt) {
+  const std::vector<RoofPlaneHypothesis> out = FacesMirroredAcrossFootprints(
+      {MansardSouthLowerFace()}, {TestFootprint("F1", kRectangle)}, AnyFace());
+  ASSERT_EQ(out.size(), 1u);
+  const RoofPlaneHypothesis& q = out[0];
+  EXPECT_TRUE(q.derived);
+  EXPECT_EQ(q.id, "south lower mirrored across footprint F1");
+  // The north face: 6 m at the north eave (y = 8), rising southwards at
+  // 65 deg to the break 1.5 m in.
+  EXPECT_NEAR(PlaneZ(q, 2, 8), 6.0, 1e-9);
+  EXPECT_NEAR(PlaneZ(q, 7, 6.5), 6 + 1.5 * std::tan(65 * M_PI / 180), 1e-9);
+  EXPECT_NEAR(std::abs(SignedArea(q.patch)), 12.75, 1e-9);
+  for (const auto& v : q.patch) EXPECT_GE(v.y(), 6.5 - 1e-9);
+  ASSERT_EQ(q.lines_xy.size(), 1u);
+  EXPECT_NEAR(q.lines_xy[0][0].y(), 8.0, 1e-12);
+}
+
+TEST(FacesMirroredAcrossFootprints, AHipEndProposesTheOtherEndAcrossTheShortAxis) {
+  // The west end of a hipped roof: falling west from x = 3 at 40 deg.
+  RoofPlaneHypothesis end =
+      TestPlane(SlopedPlane({0, 4, 6}, 40, 180), {{0, 0}, {3, 4}, {0, 8}}, "west end");
+  end.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 8)}};  // its eave
+  const std::vector<RoofPlaneHypothesis> out =
+      FacesMirroredAcrossFootprints({end}, {TestFootprint("F1", kRectangle)}, AnyFace());
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(PlaneZ(out[0], 10, 4), 6.0, 1e-9);
+  EXPECT_NEAR(PlaneZ(out[0], 7, 4), 6 + 3 * std::tan(40 * M_PI / 180), 1e-9);
+}
+
+TEST(FacesMirroredAcrossFootprints, NothingWhereTheFootprintIsNoRectangle) {
+  // An L: the rectangle with its north-east quarter taken out.
+  const Ring2 ell = {{0, 0}, {10, 0}, {10, 4}, {5, 4}, {5, 8}, {0, 8}};
+  EXPECT_TRUE(
+      FacesMirroredAcrossFootprints({MansardSouthLowerFace()}, {TestFootprint("L", ell)}, AnyFace())
+          .empty());
+}
+
+TEST(FacesMirroredAcrossFootprints, NothingForAFaceAcrossTheAxisOrOneMirroredAlready) {
+  // A shed over the whole footprint is its own mirror image.
+  const RoofPlaneHypothesis shed = TestPlane(SlopedPlane({5, 0, 4}, 8, -90), kRectangle, "shed");
+  EXPECT_TRUE(
+      FacesMirroredAcrossFootprints({shed}, {TestFootprint("F1", kRectangle)}, AnyFace()).empty());
+  // A flat roof falls nowhere.
+  const RoofPlaneHypothesis flat = TestPlane({0, 0, 1, -6}, {{0, 0}, {10, 0}, {10, 3}}, "flat");
+  EXPECT_TRUE(
+      FacesMirroredAcrossFootprints({flat}, {TestFootprint("F1", kRectangle)}, AnyFace()).empty());
+  // The north face found already.
+  const std::vector<RoofPlaneHypothesis> north = FacesMirroredAcrossFootprints(
+      {MansardSouthLowerFace()}, {TestFootprint("F1", kRectangle)}, AnyFace());
+  ASSERT_EQ(north.size(), 1u);
+  RoofPlaneHypothesis found = north[0];
+  found.derived = false;
+  EXPECT_TRUE(FacesMirroredAcrossFootprints({MansardSouthLowerFace(), found},
+                                            {TestFootprint("F1", kRectangle)}, AnyFace())
+                  .empty());
+  // The top strip of a shed rises away from the axis: its mirror image
+  // would fall the wrong way.
+  const RoofPlaneHypothesis shed_top =
+      TestPlane(SlopedPlane({5, 8, 6}, 15, -90), {{0, 6}, {10, 6}, {10, 8}, {0, 8}}, "shed top");
+  EXPECT_TRUE(
+      FacesMirroredAcrossFootprints({shed_top}, {TestFootprint("F1", kRectangle)}, AnyFace())
+          .empty());
+  // A face with no line in plan gives an image the assembly would refuse.
+  RoofPlaneHypothesis unlined = MansardSouthLowerFace();
+  unlined.lines_xy.clear();
+  EXPECT_TRUE(FacesMirroredAcrossFootprints({unlined}, {TestFootprint("F1", kRectangle)}, AnyFace())
+                  .empty());
+  // A face outside the footprint is not its face.
+  RoofPlaneHypothesis away = MansardSouthLowerFace();
+  for (auto& v : away.patch) v.y() -= 20;
+  EXPECT_TRUE(
+      FacesMirroredAcrossFootprints({away}, {TestFootprint("F1", kRectangle)}, AnyFace()).empty());
+}
+
+TEST(FacesMirroredAcrossFootprints, AFootprintWithOneFaceIsLeftToTheRoofModelsBeyondItsRidge) {
+  // A gable's south face, ridge along the long axis.
+  RoofPlaneHypothesis south =
+      TestPlane(SlopedPlane({5, 0, 6}, 35, -90), {{0, 0}, {10, 0}, {10, 4}, {0, 4}}, "south");
+  south.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(10, 0)}};
+  EXPECT_TRUE(FacesMirroredAcrossFootprints({south}, {TestFootprint("F1", kRectangle)}).empty());
+  // With a hip end beside it the footprint holds two faces, and the roof
+  // models beyond a ridge do not run there.
+  RoofPlaneHypothesis end =
+      TestPlane(SlopedPlane({0, 4, 6}, 40, 180), {{0, 0}, {3, 4}, {0, 8}}, "west end");
+  end.lines_xy = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 8)}};
+  const std::vector<RoofPlaneHypothesis> out =
+      FacesMirroredAcrossFootprints({south, end}, {TestFootprint("F1", kRectangle)});
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].id, "south mirrored across footprint F1");
+  EXPECT_EQ(out[1].id, "west end mirrored across footprint F1");
+}
+
 }  // namespace roofsweep

@@ -33,10 +33,10 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
 int Run(const std::vector<std::string>& args, Context& ctx) {
   RunRequest r;
   bool sweep_only = false;
-  bool no_mirror = false, no_hip_ends = false, no_colour_breaks = false, no_growth = false,
-       no_merge = false, no_lift = false, no_eaves = false, no_border_clip = false,
-       flat_only = false, no_beyond = false, no_pieces = false, no_lod1 = false,
-       models_apart = false, fixed_verify_score = false;
+  bool no_mirror = false, no_hip_ends = false, no_footprint_mirror = false,
+       no_colour_breaks = false, no_growth = false, no_merge = false, no_lift = false,
+       no_eaves = false, no_border_clip = false, flat_only = false, no_beyond = false,
+       no_pieces = false, no_lod1 = false, models_apart = false, fixed_verify_score = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -98,6 +98,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-no_hip_ends", &no_hip_ends,
             "do not propose, at the other end of a ridge, the mirror image of a hip end found "
             "at one end only (completion by symmetry, verified like any plane)")
+      .Flag("-no_footprint_mirror", &no_footprint_mirror,
+            "with footprints, do not propose the mirror image of a roof face across the axis "
+            "of a rectangular footprint (completion by symmetry, verified like any plane)")
       .Flag("-no_lift_lines", &no_lift,
             "one pass only: do not lift the image segments no 3D line explains onto the roof "
             "planes found (where a view across them confirms the depth) and sweep again with "
@@ -165,6 +168,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.drop_eave_planes = !keep_eave_planes;
   r.mirror_faces = !no_mirror;
   r.hip_ends = !no_hip_ends;
+  r.footprint_mirror = !no_footprint_mirror;
   r.lift_lines = !no_lift;
   r.eave_search = !no_eaves;
   r.border_clip = !no_border_clip;

@@ -801,6 +801,28 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
                           Since(t0)});
   }
 
+  // With footprints, the faces missing on one side of a symmetric
+  // footprint from their mirror images on the other (a mansard's steep
+  // lower faces and shallow upper ends); after the mirrored faces and hip
+  // ends, which have their own ridge to go by. The conflicts are settled on
+  // a copy and only the new faces taken from it, as for the hip ends.
+  if (!footprints.empty() && r.footprint_mirror) {
+    t0 = Clock::now();
+    FootprintMirrorOptions mo = r.footprint_mirror_options;
+    mo.leave_one_face =
+        r.footprint_flat_roofs && r.roof_models_over_footprints && r.roofs_beyond_ridges;
+    std::vector<RoofPlaneHypothesis> faces =
+        FacesMirroredAcrossFootprints(roof_planes, footprints, mo);
+    const size_t proposed = faces.size();
+    size_t confirmed = 0, kept = 0;
+    if (!faces.empty()) confirmed = add_verified(std::move(faces), nullptr, &kept);
+    out.stages.push_back({"faces mirrored across footprints",
+                          StrFormat("%zu proposed across a footprint's axis, %zu confirmed, %zu "
+                                    "kept in the conflicts",
+                                    proposed, confirmed, kept),
+                          Since(t0)});
+  }
+
   // One face fitted as two planes a few degrees apart: the merged plane
   // replaces both where the images confirm it about as well as the weaker
   // of the two. Two planes in a concave crease that it fits clearly worse

@@ -124,6 +124,12 @@ struct RunRequest {
   // plane (height test included: no line fixes its height).
   bool hip_ends = true;
   HipEndMirrorOptions hip_end;
+  // With footprints, completion by the footprint's symmetry
+  // (FacesMirroredAcrossFootprints): a face over a rectangular footprint
+  // proposes its mirror image across the footprint's axis, verified like
+  // any plane (height test included).
+  bool footprint_mirror = true;
+  FootprintMirrorOptions footprint_mirror_options;
   // A second pass: image segments no 3D line explains are lifted onto the
   // planes the first pass kept (LiftSegmentsOntoPlanes), and the sweep,
   // grouping and verification run again over all lines.
