@@ -804,8 +804,10 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
   // With footprints, the faces missing on one side of a symmetric
   // footprint from their mirror images on the other (a mansard's steep
   // lower faces and shallow upper ends); after the mirrored faces and hip
-  // ends, which have their own ridge to go by. The conflicts are settled on
-  // a copy and only the new faces taken from it, as for the hip ends.
+  // ends, which have their own ridge to go by. Their height is the mirrored
+  // face's (RunRequest::footprint_mirror_min_margin). The conflicts are
+  // settled on a copy and only the new faces taken from it, as for the hip
+  // ends.
   if (!footprints.empty() && r.footprint_mirror) {
     t0 = Clock::now();
     FootprintMirrorOptions mo = r.footprint_mirror_options;
@@ -815,7 +817,9 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
         FacesMirroredAcrossFootprints(roof_planes, footprints, mo);
     const size_t proposed = faces.size();
     size_t confirmed = 0, kept = 0;
-    if (!faces.empty()) confirmed = add_verified(std::move(faces), nullptr, &kept);
+    VerifyOptions from_mirror = r.verify;
+    from_mirror.min_margin = r.footprint_mirror_min_margin;
+    if (!faces.empty()) confirmed = add_verified(std::move(faces), &from_mirror, &kept);
     out.stages.push_back({"faces mirrored across footprints",
                           StrFormat("%zu proposed across a footprint's axis, %zu confirmed, %zu "
                                     "kept in the conflicts",
