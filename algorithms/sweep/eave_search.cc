@@ -197,18 +197,34 @@ std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segment
 
 double Area(const Ring2& r) { return r.size() < 3 ? 0.0 : std::abs(SignedArea(r)); }
 
+// True when clip_min_line_ends lines of min_length_m or more that run
+// along direction e (within 45 deg of it) have their outer end within
+// level_line_m of `end`.
+bool LinesEndAt(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double end,
+                const EaveSearchOptions& o) {
+  if (o.clip_min_line_ends <= 0) return false;
+  int n = 0;
+  for (const auto& l : p.lines_xy) {
+    const Eigen::Vector2d d = l[1] - l[0];
+    if (d.norm() < o.min_length_m || std::abs(e.dot(d.normalized())) < std::sqrt(0.5)) continue;
+    if (std::max(e.dot(l[0]), e.dot(l[1])) >= end - o.level_line_m) ++n;
+  }
+  return n >= o.clip_min_line_ends;
+}
+
 // Cuts `clipped` clip_beyond_m past the line of min_length_m that lies
 // along the outermost point of the face's lines in direction e, if there
 // is one and the lines span min_depth_m that way.
 void CutPastEndLine(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double min_depth_m,
-                    const EaveSearchOptions& o, Ring2* clipped) {
+                    bool at_line_ends, const EaveSearchOptions& o, Ring2* clipped) {
   double end = -1e300, start = 1e300;
   for (const auto& l : p.lines_xy)
     for (const Eigen::Vector2d& q : l) {
       end = std::max(end, e.dot(q));
       start = std::min(start, e.dot(q));
     }
-  if (end - start >= min_depth_m && LineAlongEnd(p, e, end, o))
+  if (end - start >= min_depth_m &&
+      (LineAlongEnd(p, e, end, o) || (at_line_ends && LinesEndAt(p, e, end, o))))
     *clipped = ClipHalfPlane(*clipped, e.x(), e.y(), -(end + o.clip_beyond_m));
 }
 
@@ -307,7 +323,7 @@ int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes, const EaveS
     if (!fall && !(o.clip_flat && flat)) continue;
     Ring2 clipped = p.patch;
     for (const auto& [e, min_depth_m] : CutDirections(p, fall, o))
-      CutPastEndLine(p, e, min_depth_m, o, &clipped);
+      CutPastEndLine(p, e, min_depth_m, /*at_line_ends=*/!fall, o, &clipped);
     const double removed = Area(p.patch) - Area(clipped);
     if (clipped.size() < 3 || !(removed > 1e-3)) continue;
     std::snprintf(buf, sizeof buf, "%s: %spatch cut by %.1f m2 to its border lines", p.id.c_str(),

@@ -73,6 +73,17 @@ struct EaveSearchOptions {
   // degree shed roof on `realistic` s19 lost 16.5 m2 of its patch and its
   // match.
   double flat_max_slope_deg = 3.0;
+  // ... and a flat face also where no line lies along that end but at
+  // least this many of its lines of min_length_m or more, running towards
+  // it, stop there (their outer ends within level_line_m of it): two eaves
+  // that end together mark an edge that was not matched (B&Z §5: end
+  // points bound the face). A flat garage on `realistic-11` ran 2 m past
+  // its unmatched west edge on every seed; over 30 runs from matched lines
+  // the vertex RMS fell by 0.20 +- 0.08 GSD (10 better, none worse). Not
+  // for sloped faces, whose ridge and eave may stop together short of a
+  // gable end (a verge is wanted there): cutting them too cost `hard-1`
+  // vertices with footprints on every seed. 0 turns it off.
+  int clip_min_line_ends = 2;
 };
 
 // An eave found for one face.
@@ -124,7 +135,8 @@ int ExtendFacesToEaves(const std::vector<FaceEave>& eaves, std::vector<RoofPlane
 // found with little else below it would cut its face to a sliver. A flat
 // face (under flat_max_slope_deg; with clip_flat) is cut the same way across
 // each of its lines of min_length_m, both ways, where its lines span
-// clip_min_depth_m. Faces between flat_max_slope_deg and min_slope_deg are
+// clip_min_depth_m, and also where clip_min_line_ends of its lines end
+// together. Faces between flat_max_slope_deg and min_slope_deg are
 // left alone. Returns how many patches were cut; `log` (optional) gets one
 // line per cut.
 int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes,

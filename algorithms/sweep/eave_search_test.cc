@@ -220,6 +220,32 @@ TEST(ClipFacesAtBorderLines, AFlatRoofRunningPastTheLineAtTheEndOfItsLinesEndsTh
   EXPECT_EQ(ClipFacesAtBorderLines(&planes), 0);
 }
 
+TEST(ClipFacesAtBorderLines, AFlatRoofEndsWhereItsEavesEndTogether) {
+  // The west edge was not matched; the south and north edges both stop at
+  // x = 0 (one 0.2 m short of it), and the east edge bounds the depth.
+  std::vector<RoofPlaneHypothesis> planes = {FlatRoof()};
+  planes[0].lines_xy = {Line2{Eigen::Vector2d(0.2, 0), Eigen::Vector2d(10, 0)},
+                        Line2{Eigen::Vector2d(0, 6), Eigen::Vector2d(10, 6)},
+                        Line2{Eigen::Vector2d(10, 0), Eigen::Vector2d(10, 6)}};
+  const std::vector<RoofPlaneHypothesis> before = planes;
+  std::vector<std::string> log;
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes, {}, &log), 1);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NEAR(RingBounds(planes[0].patch)[0], -0.3, 1e-9);
+  EXPECT_NEAR(std::abs(SignedArea(planes[0].patch)), 61.8, 1e-9);
+  // Off, nothing lies along the west end to cut at.
+  EaveSearchOptions off;
+  off.clip_min_line_ends = 0;
+  planes = before;
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes, off), 0);
+  // One edge stopping there is not enough: the other ends 3 m further in
+  // (a line broken by a tree's shadow).
+  planes = before;
+  planes[0].lines_xy[1][0] = Eigen::Vector2d(3, 6);
+  EXPECT_EQ(ClipFacesAtBorderLines(&planes), 0);
+  EXPECT_EQ(planes[0].patch, before[0].patch);
+}
+
 TEST(ClipFacesAtBorderLines, AFlatRoofsLinesWithoutDepthCutNothing) {
   // Its west edge alone: the roof may lie on either side of it.
   std::vector<RoofPlaneHypothesis> planes = {FlatRoof()};
