@@ -212,9 +212,10 @@ bool LinesEndAt(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double e
   return n >= o.clip_min_line_ends;
 }
 
-// Cuts `clipped` clip_beyond_m past the line of min_length_m that lies
-// along the outermost point of the face's lines in direction e, if there
-// is one and the lines span min_depth_m that way.
+// Cuts `clipped` clip_beyond_m past the outermost point of the face's
+// lines in direction e, if the lines span min_depth_m that way and a line
+// of min_length_m lies along that point or, with at_line_ends (flat faces),
+// clip_min_line_ends of them end there (LinesEndAt).
 void CutPastEndLine(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double min_depth_m,
                     bool at_line_ends, const EaveSearchOptions& o, Ring2* clipped) {
   double end = -1e300, start = 1e300;
