@@ -36,7 +36,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   bool no_mirror = false, no_hip_ends = false, no_footprint_mirror = false,
        no_colour_breaks = false, no_growth = false, no_merge = false, no_lift = false,
        no_eaves = false, no_border_clip = false, flat_only = false, no_beyond = false,
-       no_pieces = false, no_lod1 = false, models_apart = false, fixed_verify_score = false;
+       no_pieces = false, no_fall_pieces = false, no_lod1 = false, models_apart = false,
+       fixed_verify_score = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -123,6 +124,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "with footprints, keep a plane that spans several footprints whole: do not verify "
             "its piece over each footprint apart and cut away those the images refute (a face "
             "running on over a neighbour's roof)")
+      .Flag("-no_fall_line_pieces", &no_fall_pieces,
+            "without footprints, keep a sloped face whole: do not verify its pieces between its "
+            "lines down the fall line (verges, party walls) apart and cut away those the images "
+            "refute (a terraced row's gables joined across a flat-roofed house)")
       .Flag("-fixed_verify_score", &fixed_verify_score,
             "do not scale the verification's score threshold (-verify_score) by the block's "
             "imagery as the sweep measured it (hazy, blurred or noisy images correlate less)")
@@ -178,6 +183,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.roof_models_whole = !models_apart;
   r.verify_follows_sweep = !fixed_verify_score;
   r.footprint_pieces = !no_pieces;
+  r.fall_line_pieces = !no_fall_pieces;
   r.merge_coplanar = !no_merge;
   r.colour_breaks = !no_colour_breaks;
   r.lod1_fallback = !no_lod1;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "algorithms/buildings/assemble_buildings.h"
+#include "algorithms/buildings/fall_line_pieces.h"
 #include "algorithms/buildings/footprint_growth.h"
 #include "algorithms/buildings/footprint_roofs.h"
 #include "algorithms/buildings/lod1_block.h"
@@ -110,6 +111,12 @@ struct RunRequest {
   // verified apart and cut away where the images refute it
   // (PiecesOverFootprints, CutRefutedPieces).
   bool footprint_pieces = true;
+  // Without footprints: the pieces of a sloped face between its lines down
+  // the fall line are verified apart and cut away where the images refute
+  // them, before the conflicts (PiecesAcrossFallLines,
+  // CutRefutedFallLinePieces).
+  bool fall_line_pieces = true;
+  FallLinePieceOptions fall_pieces;
   // Two planes a few degrees apart that meet without a step are merged
   // where the verification confirms the merged plane
   // (NearCoplanarMerges).
