@@ -464,12 +464,13 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
     std::vector<char> refuted;
     std::vector<PlaneVerification> checks;
   };
-  auto refuted_pieces = [&](const std::vector<RoofPlaneHypothesis>& planes) {
+  // `at`: where the progress stands meanwhile.
+  auto refuted_pieces = [&](const std::vector<RoofPlaneHypothesis>& planes, double at) {
     RefutedPieces q;
     q.pieces = PiecesAcrossFallLines(planes, r.fall_pieces);
     std::vector<RoofPlaneHypothesis> hyps;
     for (const FallLinePiece& p : q.pieces) hyps.push_back(p.piece);
-    SubProgress none(progress, 0.99, 0.99);
+    SubProgress none(progress, at, at);
     q.checks = VerifyPlanes(block, images, hyps, r.verify, none);
     for (const PlaneVerification& c : q.checks)
       q.refuted.push_back(!c.accepted && std::isfinite(c.score));
@@ -519,7 +520,7 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
     // roof it ran over can still win there.
     int pieces_cut = 0;
     if (fall_line_pieces) {
-      const RefutedPieces q = refuted_pieces(verified);
+      const RefutedPieces q = refuted_pieces(verified, to);
       for (int k : CutRefutedFallLinePieces(q.pieces, q.refuted, &verified)) {
         rejected.push_back(q.pieces[k].piece.id + ": " + q.checks[k].reason);
         if (final_pass && trace) trace->push_back({q.pieces[k].piece, q.checks[k]});
@@ -899,7 +900,7 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
     // across it).
     std::vector<char> piece_refuted(proposals.size(), 0);
     if (fall_line_pieces) {
-      const RefutedPieces q = refuted_pieces(proposals);
+      const RefutedPieces q = refuted_pieces(proposals, 0.99);
       for (size_t k = 0; k < q.pieces.size(); ++k)
         if (q.refuted[k]) piece_refuted[q.pieces[k].plane] = 1;
     }
