@@ -464,10 +464,16 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
     std::vector<char> refuted;
     std::vector<PlaneVerification> checks;
   };
+  FallLinePieceOptions piece_options;
+  piece_options.min_slope_deg = r.assembly.party_min_slope_deg;
+  piece_options.max_angle_deg = r.assembly.party_max_angle_deg;
+  piece_options.min_span = r.assembly.party_min_span;
+  piece_options.min_depth_m = r.assembly.party_min_depth_m;
+  piece_options.min_width_m = r.assembly.party_min_width_m;
   // `at`: where the progress stands meanwhile.
   auto refuted_pieces = [&](const std::vector<RoofPlaneHypothesis>& planes, double at) {
     RefutedPieces q;
-    q.pieces = PiecesAcrossFallLines(planes, r.fall_pieces);
+    q.pieces = PiecesAcrossFallLines(planes, piece_options);
     std::vector<RoofPlaneHypothesis> hyps;
     for (const FallLinePiece& p : q.pieces) hyps.push_back(p.piece);
     SubProgress none(progress, at, at);

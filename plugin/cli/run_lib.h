@@ -114,9 +114,9 @@ struct RunRequest {
   // Without footprints: the pieces of a sloped face between its lines down
   // the fall line are verified apart and cut away where the images refute
   // them, before the conflicts (PiecesAcrossFallLines,
-  // CutRefutedFallLinePieces).
+  // CutRefutedFallLinePieces). Which lines cut is the assembly's party-wall
+  // rule (AssemblyOptions::party_*), so the two share one setting.
   bool fall_line_pieces = true;
-  FallLinePieceOptions fall_pieces;
   // Two planes a few degrees apart that meet without a step are merged
   // where the verification confirms the merged plane
   // (NearCoplanarMerges).
