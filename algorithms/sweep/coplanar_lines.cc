@@ -268,7 +268,7 @@ int AttachCoplanarLines(const std::vector<SweepLine>& lines, std::vector<PlaneGr
     std::vector<int> order;
     for (size_t l = 0; l < lines.size(); ++l) {
       const Segment3& s = lines[l].segment;
-      if (s.Length() < o.min_line_length_m) continue;
+      if (s.Length() < o.min_line_length_m || lines[l].level) continue;
       if (std::find(g.lines.begin(), g.lines.end(), static_cast<int>(l)) != g.lines.end()) continue;
       if (!OnPlane(g.plane, s, o.max_distance_m)) continue;
       if (ConvexDistance(g.patch, PlanSegment(s)) > o.max_gap_m) continue;
@@ -291,7 +291,8 @@ std::vector<PlaneGroup> PlanesFromLinePairs(const std::vector<SweepLine>& lines,
   if (half_planes && o.refuse_past_bounding_line) sides = SidesOf(lines, *half_planes);
   std::vector<int> usable;
   for (size_t l = 0; l < lines.size(); ++l)
-    if (lines[l].segment.Length() >= o.min_line_length_m) usable.push_back(static_cast<int>(l));
+    if (lines[l].segment.Length() >= o.min_line_length_m && !lines[l].level)
+      usable.push_back(static_cast<int>(l));
   // Plan bounding boxes grown by the largest pair distance prune the pairs
   // cheaply; the lines of one block number in the thousands at most.
   const double reach = std::max(o.max_pair_distance_m, o.junction_gap_m);

@@ -29,6 +29,19 @@ std::vector<SweepLine> Gable(double x0 = 0) {
           L({x0 + 10, 4, 8}, {x0 + 10, 8, 6})};
 }
 
+// The gable's south face as the sweep found it from the ridge alone, with
+// a 2.5 m strip.
+PlaneGroup SweptSouthFace() {
+  PlaneGroup g;
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -2, 4).normalized();
+  g.plane << n, -n.dot(Eigen::Vector3d(0, 4, 8));
+  g.lines = {0};
+  g.half_planes = {0};
+  g.patch = ConvexHull({{0, 4}, {10, 4}, {10, 1.5}, {0, 1.5}});
+  g.longest_line_m = 10;
+  return g;
+}
+
 TEST(CoplanarLines, GableGivesItsTwoFacesAndNotThePlaneThroughTheEaves) {
   const std::vector<SweepLine> lines = Gable();
   std::vector<PlaneGroup> none;
@@ -146,14 +159,8 @@ TEST(CoplanarLines, LinesOfNeighbouringBuildingsDoNotPair) {
 
 TEST(CoplanarLines, SweptPlaneTakesItsCoplanarLinesAndKeepsOthersOut) {
   const std::vector<SweepLine> lines = Gable();
-  // The sweep found the south face from the ridge alone, with a 2.5 m strip.
-  PlaneGroup g;
+  const PlaneGroup g = SweptSouthFace();
   const Eigen::Vector3d n = Eigen::Vector3d(0, -2, 4).normalized();
-  g.plane << n, -n.dot(Eigen::Vector3d(0, 4, 8));
-  g.lines = {0};
-  g.half_planes = {0};
-  g.patch = ConvexHull({{0, 4}, {10, 4}, {10, 1.5}, {0, 1.5}});
-  g.longest_line_m = 10;
   std::vector<PlaneGroup> planes = {g};
   const int attached = AttachCoplanarLines(lines, &planes);
   EXPECT_EQ(attached, 3);  // south eave and the two south verges
@@ -168,6 +175,23 @@ TEST(CoplanarLines, SweptPlaneTakesItsCoplanarLinesAndKeepsOthersOut) {
   const std::vector<PlaneGroup> pairs = PlanesFromLinePairs(lines, &planes);
   ASSERT_EQ(pairs.size(), 1u);
   EXPECT_GT(AngleDeg(pairs[0].plane, n), 10.0);
+}
+
+// Level lines (SweepLevelLines) join planes through their half-planes
+// only: two eaves at one height are coplanar with a flat roof there, and
+// the south eave would join the swept face as a line.
+TEST(CoplanarLines, LevelLinesNeitherPairNorJoin) {
+  std::vector<SweepLine> lines = Gable();
+  for (int i : {1, 2}) lines[i].level = true;  // both eaves
+  const PlaneGroup g = SweptSouthFace();
+  std::vector<PlaneGroup> planes = {g};
+  EXPECT_EQ(AttachCoplanarLines(lines, &planes), 2);  // the two south verges
+  EXPECT_EQ(std::count(planes[0].lines.begin(), planes[0].lines.end(), 1), 0);
+  // The eaves alone, level: no pair, though they lie in the plane z = 6.
+  std::vector<PlaneGroup> none;
+  EXPECT_TRUE(PlanesFromLinePairs({lines[1], lines[2]}, &none).empty());
+  lines[1].level = lines[2].level = false;
+  EXPECT_EQ(PlanesFromLinePairs({lines[1], lines[2]}, &none).size(), 1u);
 }
 
 TEST(CoplanarLines, ALineThatBoundsAnotherFaceIsNotAttached) {

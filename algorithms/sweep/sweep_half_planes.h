@@ -26,6 +26,11 @@ struct SweepLine {
   // unknown (lines read from a file without it, true edges). Not used by
   // the sweep; carried to the buildings' quality attributes.
   double rms_px = std::numeric_limits<double>::quiet_NaN();
+  // Placed level by the sweep of its face alone (SweepLevelLines): any two
+  // such lines at one height are coplanar with a flat roof there, so it
+  // joins planes only through its own half-planes, not as a coplanar line
+  // (AttachCoplanarLines, PlanesFromLinePairs).
+  bool level = false;
 };
 
 // One line side with its best half-plane (Baillard & Zisserman 2000, §3.4)

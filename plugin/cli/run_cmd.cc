@@ -35,9 +35,9 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   bool sweep_only = false;
   bool no_mirror = false, no_hip_ends = false, no_footprint_mirror = false,
        no_colour_breaks = false, no_growth = false, no_merge = false, no_lift = false,
-       no_eaves = false, no_border_clip = false, flat_only = false, no_beyond = false,
-       no_pieces = false, no_fall_pieces = false, no_lod1 = false, models_apart = false,
-       fixed_verify_score = false;
+       no_level = false, no_eaves = false, no_border_clip = false, flat_only = false,
+       no_beyond = false, no_pieces = false, no_fall_pieces = false, no_lod1 = false,
+       models_apart = false, fixed_verify_score = false;
   bool keep_eave_planes = false;
   std::string aoi;
   ArgParser p("run",
@@ -106,6 +106,10 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "one pass only: do not lift the image segments no 3D line explains onto the roof "
             "planes found (where a view across them confirms the depth) and sweep again with "
             "those that bound a plane")
+      .Flag("-no_level_lines", &no_level,
+            "in the second pass, do not place the image segments along the epipolar lines of "
+            "every view that sees them (eaves and ridges along the flight line seen from one "
+            "strip) by sweeping their faces over height and angle together")
       .Flag("-no_border_clip", &no_border_clip,
             "let a face's patch run on past the eave or verge line that bounds its lines (a "
             "hip's or verge's sweep strip over the wall and the ground), or a flat roof's past "
@@ -175,6 +179,7 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
   r.hip_ends = !no_hip_ends;
   r.footprint_mirror = !no_footprint_mirror;
   r.lift_lines = !no_lift;
+  r.level_lines = !no_level;
   r.eave_search = !no_eaves;
   r.border_clip = !no_border_clip;
   r.footprint_growth = !no_growth;

@@ -616,10 +616,48 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
                           StrFormat("%zu lifted onto %zu planes, %zu of them border lines",
                                     lifts.size(), roof_planes.size(), borders.size()),
                           Since(t0)});
+    size_t n_level = 0;
+    // Without footprints only: with them the roof models over bare
+    // footprints reach the roofs no line places, and over 30 paired runs
+    // the level lines moved plane quality -0.29 +- 0.26 there (5 up / 10
+    // down) against +0.12 +- 0.21 without (building quality +1.51 +- 0.45).
+    if (r.level_lines && footprints.empty()) {
+      t0 = Clock::now();
+      // A lifted segment lies on a plane already: its depth is known.
+      for (const LiftedLine& l : lifts)
+        if (!l.observations.empty()) used[l.observations[0].first][l.observations[0].second] = true;
+      for (const LiftedLine& l : borders) known.push_back(l.segment);
+      // Where the block gives no ground, the lowest lines stand for it.
+      double ground_z = 0;
+      {
+        std::vector<double> z;
+        for (const SweepLine& l : lines) z.push_back(std::min(l.segment.a.z(), l.segment.b.z()));
+        if (!z.empty()) {
+          std::nth_element(z.begin(), z.begin() + z.size() / 20, z.end());
+          ground_z = z[z.size() / 20];
+        }
+      }
+      SubProgress level_progress(progress, 0.65, 0.72);
+      LevelLineStats ls;
+      const std::vector<LevelLine> level =
+          SweepLevelLines(block, textures, segments, used, roof_planes, known, ground_z,
+                          CandidateThreshold(hps, r.sweep), r.sweep, r.level, level_progress, &ls);
+      // The reference view is the segment's own: its image line is exact
+      // only there.
+      for (const LevelLine& l : level) lines.push_back({l.segment, {l.view}, std::nan(""), true});
+      n_level = level.size();
+      out.stages.push_back(
+          {"level lines swept",
+           StrFormat(
+               "%d segments no view fixes, %d swept, %d with a height that stands out, %zu placed",
+               ls.candidates, ls.swept, ls.peaked, level.size()),
+           Since(t0)});
+    }
     t0 = Clock::now();
     // Only the lines whose bands a lifted line reaches are swept again.
-    hps = sweep(lines, 0.65, 0.95, "half-plane sweep (pass 2)",
-                StrFormat("%zu lines lifted", borders.size()), &hps);
+    hps = sweep(lines, r.level_lines && footprints.empty() ? 0.72 : 0.65, 0.95,
+                "half-plane sweep (pass 2)",
+                StrFormat("%zu lines lifted, %zu level", borders.size(), n_level), &hps);
   }
 
   // The sweeps are done; what follows reads the images themselves.

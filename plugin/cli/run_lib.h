@@ -20,6 +20,7 @@
 #include "algorithms/sweep/eave_planes.h"
 #include "algorithms/sweep/eave_search.h"
 #include "algorithms/sweep/footprint_roof_search.h"
+#include "algorithms/sweep/level_lines.h"
 #include "algorithms/sweep/lift_lines.h"
 #include "algorithms/sweep/merge_coplanar_neighbours.h"
 #include "algorithms/sweep/plane_grouping.h"
@@ -151,6 +152,11 @@ struct RunRequest {
   // grouping and verification run again over all lines.
   bool lift_lines = true;
   LiftOptions lift;
+  // In the second pass, the segments that neither matching nor the lifts
+  // placed and that every view sees along its epipolar lines are placed
+  // by the sweep of their faces over height and angle (SweepLevelLines).
+  bool level_lines = true;
+  LevelLineOptions level;
   // A sloped face whose patch stops short of its eave grows to the eave
   // that image segments lifted onto its plane show (FindEaves).
   bool eave_search = true;
