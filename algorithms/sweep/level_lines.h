@@ -42,7 +42,7 @@ struct LevelLineOptions {
   // of SweepOptions::calibration_peak_ratio), and not at either end of the
   // range.
   double min_height_ratio = 2.0;
-  // See SweepLevelLines.
+  // See SweepLevelLines; negative: no segment is left out for a plane.
   double plane_margin_m = 0.5;
   // The best side's points that correlate at its best plane (not
   // outsiders, SweepOptions::outlier_min_score), as a fraction of its
