@@ -43,6 +43,13 @@ struct Camera {
   // Pixel coordinates to ideal normalised coordinates (removes distortion).
   Eigen::Vector2d PixelToNormalized(const Eigen::Vector2d& pixel) const;
 
+  // Whether pixel p lies in the image, at least `margin` pixels inside its
+  // frame (corner-origin convention: the frame is [0, width] x [0, height]).
+  bool Contains(const Eigen::Vector2d& p, double margin = 0) const {
+    return p.x() >= margin && p.y() >= margin && p.x() <= width - margin &&
+           p.y() <= height - margin;
+  }
+
   // Throws roofsweep::Error naming `where` when the camera cannot be used:
   // non-positive size or focal length, NaN or infinite parameters.
   void Validate(const std::string& where) const;

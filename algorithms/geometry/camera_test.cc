@@ -52,6 +52,19 @@ TEST(Camera, PrincipalPointMapsToOpticalAxis) {
   EXPECT_LT(c.PixelToNormalized({c.cx, c.cy}).norm(), 1e-12);
 }
 
+TEST(Camera, ContainsTheFrameAndNotBeyondItsMargin) {
+  Camera c;
+  c.width = 100;
+  c.height = 50;
+  EXPECT_TRUE(c.Contains({0, 0}));  // the frame's corner belongs to the image
+  EXPECT_TRUE(c.Contains({100, 50}));
+  EXPECT_FALSE(c.Contains({100.5, 10}));
+  EXPECT_FALSE(c.Contains({10, -0.1}));
+  EXPECT_TRUE(c.Contains({10, 10}, 10));
+  EXPECT_FALSE(c.Contains({9.9, 10}, 10));
+  EXPECT_FALSE(c.Contains({50, 40.5}, 10));
+}
+
 TEST(Camera, ValidateRefusesZeroFocalAndNaN) {
   Camera c = Pix4dCamera();
   EXPECT_NO_THROW(c.Validate("x"));

@@ -29,10 +29,6 @@ struct Candidate {
   double length_m = 0;
 };
 
-bool InImage(const Camera& cam, const Eigen::Vector2d& p) {
-  return p.x() >= 0 && p.y() >= 0 && p.x() <= cam.width && p.y() <= cam.height;
-}
-
 // The segment's ray plane cut at z: its 3D line at that height.
 std::optional<Segment3> LiftAt(const Block& block, int v, const Segment2D& s, double z) {
   const View& view = block.views[v];
@@ -143,7 +139,7 @@ std::vector<LevelLine> SweepLevelLines(const Block& block, const std::vector<Vie
         const Camera& cw = block.CameraOf(block.views[w]);
         const auto pa = Project(cw, block.views[w].pose, lift->a);
         const auto pb = Project(cw, block.views[w].pose, lift->b);
-        if (!pa || !pb || !InImage(cw, *pa) || !InImage(cw, *pb)) continue;
+        if (!pa || !pb || !cw.Contains(*pa) || !cw.Contains(*pb)) continue;
         ++seen;
         const Eigen::Vector3d base = (block.views[w].pose.C - view.pose.C).normalized();
         const auto m1 = Project(block.CameraOf(view), view.pose, mid + base);

@@ -50,10 +50,6 @@ std::pair<double, double> InsideSpan(const Ring2& ring, const Eigen::Vector2d& a
   return {t0, t1};
 }
 
-bool InImage(const Camera& cam, const Eigen::Vector2d& p) {
-  return p.x() >= 0 && p.y() >= 0 && p.x() <= cam.width && p.y() <= cam.height;
-}
-
 // Views that confirm a lift: all its observations but the lifted one.
 size_t Confirmations(const LiftedLine& l) { return l.observations.size() - 1; }
 
@@ -174,7 +170,7 @@ std::vector<LiftedLine> LiftSegmentsOntoPlanes(const Block& block,
         const Camera& cw = block.CameraOf(block.views[w]);
         const auto pa = Project(cw, block.views[w].pose, a);
         const auto pb = Project(cw, block.views[w].pose, b);
-        if (!pa || !pb || !InImage(cw, *pa) || !InImage(cw, *pb)) continue;
+        if (!pa || !pb || !cw.Contains(*pa) || !cw.Contains(*pb)) continue;
         int best = -1;
         if (Coverage(segments[w], used[w], index[w], *pa, *pb, o, &best) >= o.confirm_coverage) {
           c.observations.emplace_back(w, best);

@@ -354,9 +354,7 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<Vie
     const Camera& cam = block.CameraOf(block.views[v]);
     const Pose& pose = block.views[v].pose;
     const double m = options.view_margin_px + options.ncc_radius;
-    auto in = [&](const Eigen::Vector2d& p) {
-      return p.x() >= m && p.y() >= m && p.x() <= cam.width - m && p.y() <= cam.height - m;
-    };
+    auto in = [&](const Eigen::Vector2d& p) { return cam.Contains(p, m); };
     for (int i = 0; i < n_lines; ++i) {
       const auto a = Project(cam, pose, lines[i].segment.a);
       const auto b = Project(cam, pose, lines[i].segment.b);
