@@ -64,9 +64,18 @@ shared_or_skip() {
   echo ""
 }
 
+# run_tests: every test_* function, or those whose names match the
+# extended regular expression E2E_TESTS (E2E_SKIP: leave those matching it
+# out), so that one script's tests can run as several CTest tests, each
+# within its time limit. The seconds each took follow its name.
 run_tests() {
+  local t start
   for t in $(declare -F | awk '{print $3}' | grep '^test_'); do
+    [[ -n "${E2E_TESTS:-}" ]] && ! grep -qE -- "$E2E_TESTS" <<<"$t" && continue
+    [[ -n "${E2E_SKIP:-}" ]] && grep -qE -- "$E2E_SKIP" <<<"$t" && continue
+    start=$SECONDS
     "$t"
+    echo "--   $t: $((SECONDS - start)) s"
   done
   echo "$PASSED passed, $FAILED failed"
   [[ $FAILED -eq 0 ]]
