@@ -266,8 +266,9 @@ std::vector<LevelLine> SweepLevelLines(const Block& block, const std::vector<Vie
     for (size_t i = 0; i < n; ++i) stats->peaked += best[i][0] >= 0 || best[i][1] >= 0;
   // Fine: each side at offsets -fine_steps..fine_steps from its coarse best.
   std::vector<std::array<std::vector<double>, 2>> fine(n);
-  std::vector<std::array<std::vector<HalfPlane>, 2>> fine_sides(n);
-  for (auto& f2 : fine_sides) f2 = {std::vector<HalfPlane>(fine_n), std::vector<HalfPlane>(fine_n)};
+  // Each side's half-plane at its first best offset so far: the one the
+  // refinement below starts from.
+  std::vector<std::array<HalfPlane, 2>> fine_top(n);
   for (auto& f2 : fine) f2 = {std::vector<double>(fine_n, 0.0), std::vector<double>(fine_n, 0.0)};
   int pass = coarse;
   for (int side = 0; side < 2; ++side)
@@ -284,8 +285,10 @@ std::vector<LevelLine> SweepLevelLines(const Block& block, const std::vector<Vie
         // beside it must correlate there (the sweep drops at most half as
         // outsiders, so a weak or broken face keeps half).
         const bool face = h.candidate_shape && h.points >= o.min_face_fraction * h.points_detected;
-        fine[which[w]][side][j] = face ? h.similarity : 0.0;
-        fine_sides[which[w]][side][j] = h;
+        std::vector<double>& f = fine[which[w]][side];
+        f[j] = face ? h.similarity : 0.0;
+        if (j == 0 || f[j] > *std::max_element(f.begin(), f.begin() + j))
+          fine_top[which[w]][side] = h;
       }
     }
   std::vector<double> best_h(n, std::nan("")), best_sim(n, 0.0), best_ratio(n, 0.0);
@@ -308,7 +311,7 @@ std::vector<LevelLine> SweepLevelLines(const Block& block, const std::vector<Vie
       best_sim[i] = *top;
       best_h[i] = h;
       best_ratio[i] = ratio[i][side];
-      best_side[i] = fine_sides[i][side][j];
+      best_side[i] = fine_top[i][side];
     }
 
   std::vector<LevelLine> out;
