@@ -354,7 +354,6 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<Vie
     const Camera& cam = block.CameraOf(block.views[v]);
     const Pose& pose = block.views[v].pose;
     const double m = options.view_margin_px + options.ncc_radius;
-    auto in = [&](const Eigen::Vector2d& p) { return cam.Contains(p, m); };
     for (int i = 0; i < n_lines; ++i) {
       const auto a = Project(cam, pose, lines[i].segment.a);
       const auto b = Project(cam, pose, lines[i].segment.b);
@@ -363,7 +362,7 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<Vie
       p.front = true;
       p.p0 = *a;
       p.p1 = *b;
-      if (in(*a) && in(*b)) {
+      if (cam.Contains(*a, m) && cam.Contains(*b, m)) {
         p.v0 = *a;
         p.v1 = *b;
       } else {
@@ -373,7 +372,7 @@ std::vector<HalfPlane> SweepHalfPlanes(const Block& block, const std::vector<Vie
         int first = -1, last = -1;
         for (int k = 0; k <= kSteps; ++k) {
           const auto q = Project(cam, pose, lines[i].segment.At(static_cast<double>(k) / kSteps));
-          if (q && in(*q)) {
+          if (q && cam.Contains(*q, m)) {
             if (first < 0) first = k;
             last = k;
           }
