@@ -685,6 +685,21 @@ TEST(ConvexPolygon2, ClipIntersectDistance) {
   EXPECT_EQ(ConvexDistance(sq, other), 0);
 }
 
+TEST(ConvexPolygon2, SlabAndChord) {
+  // A triangle with its right angle at the origin, legs 4 along x and 2
+  // along y; slabs and chords across x.
+  const Ring2 tri = ConvexHull({{0, 0}, {4, 0}, {0, 2}});
+  const Eigen::Vector2d x(1, 0), y(0, 1);
+  EXPECT_NEAR(SignedArea(ConvexSlab(tri, x, 0, 2)), 3, 1e-12);  // 4 minus the tip's 1
+  EXPECT_NEAR(SignedArea(ConvexSlab(tri, x, 2, 9)), 1, 1e-12);
+  EXPECT_LT(ConvexSlab(tri, x, 5, 9).size(), 3u);
+  const auto [lo, hi] = ConvexChord(tri, x, y, 2);
+  EXPECT_NEAR(lo, 0, 1e-12);
+  EXPECT_NEAR(hi, 1, 1e-12);
+  const auto [none_lo, none_hi] = ConvexChord(tri, x, y, 5);
+  EXPECT_GT(none_lo, none_hi);
+}
+
 Footprint Fp(const std::string& id, Ring2 outline) {
   Footprint f;
   f.id = id;

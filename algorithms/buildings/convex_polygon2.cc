@@ -90,6 +90,26 @@ Ring2 ClipHalfPlane(const Ring2& ring, double a, double b, double c) {
   return out;
 }
 
+Ring2 ConvexSlab(const Ring2& ring, const Eigen::Vector2d& across, double lo, double hi) {
+  return ClipHalfPlane(ClipHalfPlane(ring, -across.x(), -across.y(), lo), across.x(), across.y(),
+                       -hi);
+}
+
+std::pair<double, double> ConvexChord(const Ring2& ring, const Eigen::Vector2d& across,
+                                      const Eigen::Vector2d& along, double s) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t k = 0; k < ring.size(); ++k) {
+    const Eigen::Vector2d& p = ring[k];
+    const Eigen::Vector2d& q = ring[(k + 1) % ring.size()];
+    const double sp = across.dot(p) - s, sq = across.dot(q) - s;
+    if ((sp > 0 && sq > 0) || (sp < 0 && sq < 0)) continue;
+    const double t = sp == sq ? 0.0 : sp / (sp - sq);
+    const double f = along.dot(p + t * (q - p));
+    lo = std::min(lo, f), hi = std::max(hi, f);
+  }
+  return {lo, hi};
+}
+
 Ring2 IntersectConvex(const Ring2& p, const Ring2& q) {
   Ring2 out = p;
   const size_t n = q.size();

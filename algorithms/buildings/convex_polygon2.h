@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace roofsweep {
@@ -29,6 +30,14 @@ Eigen::Vector2d FirstMoment(const Ring2& ring);
 // The part of `ring` where a.x + b.y + c <= 0 (Sutherland-Hodgman against
 // one half-plane; convex in, convex out; may return fewer than 3 vertices).
 Ring2 ClipHalfPlane(const Ring2& ring, double a, double b, double c);
+
+// The part of the convex ring where lo <= across . x <= hi.
+Ring2 ConvexSlab(const Ring2& ring, const Eigen::Vector2d& across, double lo, double hi);
+
+// The extent along `along` of the chord of the convex ring on the line
+// across . x = s; {inf, -inf} when the line misses it.
+std::pair<double, double> ConvexChord(const Ring2& ring, const Eigen::Vector2d& across,
+                                      const Eigen::Vector2d& along, double s);
 
 // Intersection of two convex polygons.
 Ring2 IntersectConvex(const Ring2& p, const Ring2& q);

@@ -13,29 +13,6 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-// The extent along `fall` of the chord of the convex patch on the line
-// across . x = s; {inf, -inf} when the line misses it.
-std::pair<double, double> ChordAlong(const Ring2& patch, const Eigen::Vector2d& across,
-                                     const Eigen::Vector2d& fall, double s) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (size_t k = 0; k < patch.size(); ++k) {
-    const Eigen::Vector2d& p = patch[k];
-    const Eigen::Vector2d& q = patch[(k + 1) % patch.size()];
-    const double sp = across.dot(p) - s, sq = across.dot(q) - s;
-    if ((sp > 0 && sq > 0) || (sp < 0 && sq < 0)) continue;
-    const double t = sp == sq ? 0.0 : sp / (sp - sq);
-    const double f = fall.dot(p + t * (q - p));
-    lo = std::min(lo, f), hi = std::max(hi, f);
-  }
-  return {lo, hi};
-}
-
-// The part of the patch where lo <= across . x <= hi.
-Ring2 Slab(const Ring2& patch, const Eigen::Vector2d& across, double lo, double hi) {
-  Ring2 r = ClipHalfPlane(patch, -across.x(), -across.y(), lo);
-  return ClipHalfPlane(r, across.x(), across.y(), -hi);
-}
-
 }  // namespace
 
 std::vector<FallLinePiece> PiecesAcrossFallLines(const std::vector<RoofPlaneHypothesis>& planes,
@@ -60,7 +37,7 @@ std::vector<FallLinePiece> PiecesAcrossFallLines(const std::vector<RoofPlaneHypo
       if (len < 1e-6 || std::abs(d.dot(fall)) < cos_max * len) continue;
       const double s = across.dot(0.5 * (l[0] + l[1]));
       if (s - a_lo < o.min_width_m || a_hi - s < o.min_width_m) continue;
-      const auto [c_lo, c_hi] = ChordAlong(p.patch, across, fall, s);
+      const auto [c_lo, c_hi] = ConvexChord(p.patch, across, fall, s);
       if (!(c_hi - c_lo >= o.min_depth_m) || std::abs(d.dot(fall)) < o.min_span * (c_hi - c_lo))
         continue;
       at.push_back(s);
@@ -79,7 +56,7 @@ std::vector<FallLinePiece> PiecesAcrossFallLines(const std::vector<RoofPlaneHypo
       piece.order = static_cast<int>(k);
       piece.piece = p;
       piece.piece.id = p.id + " piece " + std::to_string(k + 1) + " of " + std::to_string(n);
-      piece.piece.patch = Slab(p.patch, across, bounds[k], bounds[k + 1]);
+      piece.piece.patch = ConvexSlab(p.patch, across, bounds[k], bounds[k + 1]);
       piece.piece.lines_xy.clear();
       for (const auto& l : p.lines_xy)
         if (InsideConvex(piece.piece.patch, 0.5 * (l[0] + l[1]))) piece.piece.lines_xy.push_back(l);
