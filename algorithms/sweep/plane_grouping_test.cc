@@ -508,8 +508,12 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   const Terrace t;
   const Eigen::Vector3d& north = t.north;
   const RoofPlaneHypothesis &west = t.west, &east = t.east, &across = t.across;
+  // The faces replace the plane whole here; cut across its width, one face
+  // would replace its part of it (see the next test).
+  GroupingOptions whole;
+  whole.conflict_cut_across_fall = false;
   std::vector<RoofPlaneHypothesis> planes = {across, west, east};
-  std::vector<std::string> rejected = ResolveConflicts(&planes, GroupingOptions{});
+  std::vector<std::string> rejected = ResolveConflicts(&planes, whole);
   ASSERT_EQ(planes.size(), 2u);
   EXPECT_EQ(planes[0].id, "west");
   EXPECT_EQ(planes[1].id, "east");
@@ -520,7 +524,7 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   EXPECT_NE(rejected[0].find("east"), std::string::npos);
 
   // Without the rule, the pairwise order keeps the large plane.
-  GroupingOptions off;
+  GroupingOptions off = whole;
   off.conflict_replace_by_several = false;
   planes = {across, west, east};
   rejected = ResolveConflicts(&planes, off);
@@ -532,20 +536,20 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   // towards replacing it, and one face alone never does.
   planes = {across, west,
             WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.70)};
-  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  ASSERT_EQ(ResolveConflicts(&planes, whole).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
   // Nor do faces that fit the images only a little better: pieces of one
   // face seen as two.
   planes = {across, WithSimilarity(Face("west", north, {0, 0, 9.2}, 0, 0, 7, 5.6, 7 * 5.6), 0.8),
             WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.8)};
-  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  ASSERT_EQ(ResolveConflicts(&planes, whole).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
   // Nor do planes of one line (the grouping's minimum is two) ...
   planes = {across, west,
             WithSimilarity(Face("east", north, {0, 0, 8.0}, 7, 0, 15, 5.6, 8 * 5.6), 0.89, 1)};
-  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  ASSERT_EQ(ResolveConflicts(&planes, whole).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
   // ... nor fragments: five small planes of short lines that fit a few
@@ -556,9 +560,9 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
         Face("piece " + std::to_string(i), north, {0, 0, 8.6}, 3 * i, 0, 3 * i + 3, 5.6, 40), 0.9,
         2, 2.5));
   const std::vector<RoofPlaneHypothesis> pieces = planes;
-  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 5u);
+  ASSERT_EQ(ResolveConflicts(&planes, whole).size(), 5u);
   EXPECT_EQ(planes[0].id, "across");
-  GroupingOptions short_lines;
+  GroupingOptions short_lines = whole;
   short_lines.conflict_replace_min_line_m = 2.5;
   planes = pieces;
   EXPECT_EQ(ResolveConflicts(&planes, short_lines).size(), 1u);
@@ -568,7 +572,7 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   const RoofPlaneHypothesis big_across =
       WithSimilarity(Face("across", north, {0, 0, 8.6}, 0, 0, 15, 5.6, 2.0 * 15 * 5.6), 0.74);
   planes = {big_across, west, east};
-  ASSERT_EQ(ResolveConflicts(&planes, GroupingOptions{}).size(), 2u);
+  ASSERT_EQ(ResolveConflicts(&planes, whole).size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
 
   // Nor a face that also conflicts with another kept plane: a stronger
@@ -577,10 +581,128 @@ TEST(PlaneGrouping, APlaneAcrossTwoFacesGivesWayToTheFacesTogether) {
   const RoofPlaneHypothesis other =
       WithSimilarity(Face("other", north, {0, 0, 8.0}, 10, 0, 20, 5.6, 1000), 0.95);
   planes = {across, west, east, other};
-  rejected = ResolveConflicts(&planes, GroupingOptions{});
+  rejected = ResolveConflicts(&planes, whole);
   ASSERT_EQ(planes.size(), 2u);
   EXPECT_EQ(planes[0].id, "across");
   EXPECT_EQ(planes[1].id, "other");
+}
+
+TEST(PlaneGrouping, AFaceAcrossAPlanesDepthCutsItThere) {
+  // A gabled house between two shed roofs in a terraced row: one shed
+  // plane carried over the whole row (18 m) beats the gable's two faces
+  // (6 m wide) by its area; the gable's ridge runs 2.9 m above it.
+  const double t15 = std::tan(15 * kDeg), t40 = std::tan(40 * kDeg);
+  const Eigen::Vector3d shed_n = Eigen::Vector3d(0, -t15, 1).normalized();  // rises to +y
+  const Eigen::Vector3d south_n = Eigen::Vector3d(0, -t40, 1).normalized();
+  const Eigen::Vector3d north_n = Eigen::Vector3d(0, t40, 1).normalized();
+  RoofPlaneHypothesis shed =
+      WithSimilarity(Face("shed", shed_n, {0, 0, 6}, 0, 0, 18, 10, 180), 0.8, 4, 18);
+  const Eigen::Vector3d ridge(6, 5, 6 + 5 * t40);
+  RoofPlaneHypothesis south =
+      WithSimilarity(Face("south", south_n, ridge, 6, 0, 12, 5, 30), 0.9, 3, 6);
+  RoofPlaneHypothesis north =
+      WithSimilarity(Face("north", north_n, ridge, 6, 5, 12, 10, 30), 0.85, 3, 6);
+  const std::array<Eigen::Vector2d, 2> ridge_xy = {Eigen::Vector2d(6, 5), Eigen::Vector2d(12, 5)};
+  south.lines_xy = {ridge_xy, {Eigen::Vector2d(6, 0), Eigen::Vector2d(12, 0)}};
+  north.lines_xy = {ridge_xy, {Eigen::Vector2d(6, 10), Eigen::Vector2d(12, 10)}};
+
+  std::vector<RoofPlaneHypothesis> planes = {shed, south, north};
+  GroupingOptions off;
+  off.conflict_cut_across_fall = false;
+  ResolveConflicts(&planes, off);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "shed");
+
+  planes = {shed, south, north};
+  std::vector<std::string> notes = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 4u);
+  EXPECT_EQ(planes[0].id, "shed");
+  EXPECT_EQ(planes[1].id, "shed part 2");
+  EXPECT_EQ(planes[2].id, "south");
+  EXPECT_EQ(planes[3].id, "north");
+  // The pieces beside the gable, each 6 m wide, their scores with them.
+  for (int k : {0, 1}) {
+    EXPECT_NEAR(SignedArea(planes[k].patch), 60, 1e-6);
+    EXPECT_NEAR(planes[k].score, 60 * 0.8, 1e-6);
+  }
+  ASSERT_FALSE(notes.empty());
+  EXPECT_EQ(notes[0].rfind("shed: cut across its fall line where 2 plane(s) hold a line off it", 0),
+            0u)
+      << notes[0];
+
+  // A dormer's faces, over half of the face's depth, do not cut it.
+  RoofPlaneHypothesis dormer_s = south, dormer_n = north;
+  for (RoofPlaneHypothesis* d : {&dormer_s, &dormer_n})
+    for (Eigen::Vector2d& x : d->patch) x.y() = 2.5 + 0.5 * x.y();
+  planes = {shed, dormer_s, dormer_n};
+  ResolveConflicts(&planes, GroupingOptions{});
+  EXPECT_EQ(planes[0].id, "shed");
+  for (const RoofPlaneHypothesis& q : planes) EXPECT_NE(q.id, "shed part 2");
+
+  // Nor do faces that fit the images worse than the plane, nor a sliver
+  // of a face narrower than 3 m.
+  planes = {shed, WithSimilarity(Face("south", south_n, ridge, 6, 0, 12, 5, 30), 0.7, 3, 6),
+            WithSimilarity(Face("north", north_n, ridge, 6, 5, 12, 10, 30), 0.7, 3, 6)};
+  planes[1].lines_xy = south.lines_xy;
+  planes[2].lines_xy = north.lines_xy;
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "shed");
+  RoofPlaneHypothesis narrow_s = south, narrow_n = north;
+  for (RoofPlaneHypothesis* f : {&narrow_s, &narrow_n})
+    for (Eigen::Vector2d& x : f->patch) x.x() = x.x() == 6 ? 8 : 10;
+  planes = {shed, narrow_s, narrow_n};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "shed");
+
+  // Nor a face that roofs less than half of the strip it would take: a
+  // slanting sliver across the row.
+  RoofPlaneHypothesis sliver = south;
+  sliver.id = "sliver";
+  sliver.patch = {{6, 0}, {7, 0}, {12, 10}, {11, 10}};
+  sliver.lines_xy = {{Eigen::Vector2d(6.5, 0), Eigen::Vector2d(11.5, 10)}};
+  sliver.score = 10 * sliver.similarity;
+  planes = {shed, sliver};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].id, "shed");
+
+  // A cut whose faces do not all stay is undone: a stronger plane over the
+  // north face keeps it out, and the shed stays whole beside it.
+  const RoofPlaneHypothesis other =
+      WithSimilarity(Face("other", north_n, ridge, 6.5, 6.2, 11.5, 14, 500), 0.9);
+  planes = {shed, south, north, other};
+  notes = ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].id, "shed");
+  EXPECT_NEAR(SignedArea(planes[0].patch), 180, 1e-6);
+  EXPECT_EQ(planes[1].id, "other");
+  for (const std::string& why : notes) EXPECT_EQ(why.find("cut across"), std::string::npos) << why;
+
+  // A flat plane is cut along the steepest face's fall line: a shed roof
+  // between two flat roofs at its eave's height.
+  RoofPlaneHypothesis flat =
+      WithSimilarity(Face("flat", {0, 0, 1}, {0, 0, 6}, 0, 0, 18, 10, 180), 0.7, 4, 18);
+  RoofPlaneHypothesis mid =
+      WithSimilarity(Face("mid", shed_n, {0, 0, 6}, 6, 0, 12, 10, 60), 0.8, 3, 10);
+  mid.lines_xy = {{Eigen::Vector2d(6, 10), Eigen::Vector2d(12, 10)}};  // its top, 2.7 m up
+  planes = {flat, mid};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_EQ(planes[0].id, "flat");
+  EXPECT_EQ(planes[1].id, "flat part 2");
+  EXPECT_EQ(planes[2].id, "mid");
+
+  // Nor is a piece narrower than 3 m kept beside the faces: the gable at
+  // the row's end leaves one piece only.
+  for (RoofPlaneHypothesis* f : {&south, &north})
+    for (Eigen::Vector2d& x : f->patch) x.x() = x.x() == 6 ? 1 : 7;
+  planes = {shed, south, north};
+  ResolveConflicts(&planes, GroupingOptions{});
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_EQ(planes[0].id, "shed");
+  EXPECT_NEAR(SignedArea(planes[0].patch), 110, 1e-6);
 }
 
 TEST(PlaneGrouping, APlanePushedOutByAReplacedPlaneIsDecidedAgain) {
