@@ -95,6 +95,12 @@ Ring2 ConvexSlab(const Ring2& ring, const Eigen::Vector2d& across, double lo, do
                        -hi);
 }
 
+std::pair<double, double> ConvexExtent(const Ring2& ring, const Eigen::Vector2d& d) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Eigen::Vector2d& x : ring) lo = std::min(lo, d.dot(x)), hi = std::max(hi, d.dot(x));
+  return {lo, hi};
+}
+
 std::pair<double, double> ConvexChord(const Ring2& ring, const Eigen::Vector2d& across,
                                       const Eigen::Vector2d& along, double s) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;

@@ -34,6 +34,10 @@ Ring2 ClipHalfPlane(const Ring2& ring, double a, double b, double c);
 // The part of the convex ring where lo <= across . x <= hi.
 Ring2 ConvexSlab(const Ring2& ring, const Eigen::Vector2d& across, double lo, double hi);
 
+// The least and greatest of d . x over the ring's vertices; {inf, -inf}
+// for an empty ring.
+std::pair<double, double> ConvexExtent(const Ring2& ring, const Eigen::Vector2d& d);
+
 // The extent along `along` of the chord of the convex ring on the line
 // across . x = s; {inf, -inf} when the line misses it.
 std::pair<double, double> ConvexChord(const Ring2& ring, const Eigen::Vector2d& across,

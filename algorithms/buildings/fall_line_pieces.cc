@@ -25,11 +25,7 @@ std::vector<FallLinePiece> PiecesAcrossFallLines(const std::vector<RoofPlaneHypo
     // |n_xy| = sin(slope) for a unit normal.
     if (p.patch.size() < 3 || g.norm() < std::sin(o.min_slope_deg * kDeg)) continue;
     const Eigen::Vector2d fall = g.normalized(), across(-fall.y(), fall.x());
-    double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
-    for (const auto& q : p.patch) {
-      a_lo = std::min(a_lo, across.dot(q));
-      a_hi = std::max(a_hi, across.dot(q));
-    }
+    const auto [a_lo, a_hi] = ConvexExtent(p.patch, across);
     std::vector<double> at;
     for (const auto& l : p.lines_xy) {
       const Eigen::Vector2d d = l[1] - l[0];

@@ -268,14 +268,9 @@ std::optional<FallCut> CutAcrossFall(const std::vector<RoofPlaneHypothesis>& p, 
   }
   const Ring2 hull = IntersectConvex(ConvexHull(std::move(pts)), b.patch);
   if (hull.size() < 3) return std::nullopt;
-  auto extent = [](const Ring2& r, const Eigen::Vector2d& d) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const Eigen::Vector2d& x : r) lo = std::min(lo, d.dot(x)), hi = std::max(hi, d.dot(x));
-    return std::pair<double, double>{lo, hi};
-  };
-  const auto [s_lo, s_hi] = extent(hull, across);
-  const auto [f_lo, f_hi] = extent(hull, fall);
-  const auto [a_lo, a_hi] = extent(b.patch, across);
+  const auto [s_lo, s_hi] = ConvexExtent(hull, across);
+  const auto [f_lo, f_hi] = ConvexExtent(hull, fall);
+  const auto [a_lo, a_hi] = ConvexExtent(b.patch, across);
   const auto [c_lo, c_hi] = ConvexChord(b.patch, across, fall, 0.5 * (s_lo + s_hi));
   // A house's width at least: a sliver of one face fitted twice holds a
   // line off it too.
@@ -534,6 +529,20 @@ std::vector<std::string> ResolveConflictsOnce(std::vector<RoofPlaneHypothesis>* 
     // one of conflict_replace_min_line_m, and together hold more
     // evidence (score) than it, they replace it: a local improvement of the
     // kept set's total evidence, so it ends.
+    // Faces, not fragments: small planes of one short line fit a few
+    // samples well, and together outweighed a flat roof (realistic s17);
+    // later stages drop them.
+    auto stands_as_face = [&](int q, int big) {
+      return !replaced[q] && ConflictClass(p[q]) <= ConflictClass(p[big]) &&
+             p[q].lines >= o.min_lines && p[q].longest_line_m >= o.conflict_replace_min_line_m;
+    };
+    auto better = [&](int q, int big) {
+      return p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain;
+    };
+    auto line_off = [&](int q, int big) {
+      return o.conflict_replace_min_step_m > 0 &&
+             LineOffPlane(p[q], p[big], o.conflict_replace_min_step_m);
+    };
     for (bool changed = o.conflict_replace_by_several; changed;) {
       changed = false;
       for (int big : by_score) {
@@ -546,17 +555,8 @@ std::vector<std::string> ResolveConflictsOnce(std::vector<RoofPlaneHypothesis>* 
         // clash with them.
         for (int pass = 0; pass < 2; ++pass)
           for (int q : by_score) {
-            // Faces, not fragments: small planes of one short line fit a few
-            // samples well, and together outweighed a flat roof (realistic
-            // s17); later stages drop them.
-            if (in[q] || replaced[q] || ConflictClass(p[q]) > ConflictClass(p[big]) ||
-                p[q].lines < o.min_lines || p[q].longest_line_m < o.conflict_replace_min_line_m)
-              continue;
-            const bool better = p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain;
-            if (pass == 0 ? !better
-                          : better || !(o.conflict_replace_min_step_m > 0 &&
-                                        LineOffPlane(p[q], p[big], o.conflict_replace_min_step_m)))
-              continue;
+            if (in[q] || !stands_as_face(q, big)) continue;
+            if (pass == 0 ? !better(q, big) : better(q, big) || !line_off(q, big)) continue;
             double f = 0;
             if (!conflict(q, big, &f)) continue;
             auto clashes = [&](int j) { return j != big && j != q && conflict(q, j, &f); };
@@ -575,9 +575,7 @@ std::vector<std::string> ResolveConflictsOnce(std::vector<RoofPlaneHypothesis>* 
           // too (one cut back to its side of a crease with it).
           std::vector<int> across;
           for (int q : by_score) {
-            if (!cuts || q == big || replaced[q] || ConflictClass(p[q]) > ConflictClass(p[big]) ||
-                p[q].lines < o.min_lines || p[q].longest_line_m < o.conflict_replace_min_line_m)
-              continue;
+            if (!cuts || q == big || !stands_as_face(q, big)) continue;
             // Another face, not a part of this one fitted again nor a box
             // on a flat roof (normals conflict_cut_min_slope_deg apart at
             // least), that fits the images at least as well.
@@ -586,10 +584,7 @@ std::vector<std::string> ResolveConflictsOnce(std::vector<RoofPlaneHypothesis>* 
                     p[q].plane.head<3>().normalized().dot(p[big].plane.head<3>().normalized())) >
                     std::cos(o.conflict_cut_min_slope_deg * kDeg))
               continue;
-            if (!(p[q].similarity >= p[big].similarity + o.conflict_replace_min_gain) &&
-                !(o.conflict_replace_min_step_m > 0 &&
-                  LineOffPlane(p[q], p[big], o.conflict_replace_min_step_m)))
-              continue;
+            if (!better(q, big) && !line_off(q, big)) continue;
             double f = 0;
             if (in[q] ? !(std::abs(SignedArea(IntersectConvex(p[q].patch, p[big].patch))) >=
                           o.max_overlap * std::abs(SignedArea(p[q].patch)))
@@ -649,6 +644,8 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
                                           const GroupingOptions& o) {
   if (!o.conflict_cut_across_fall) return ResolveConflictsOnce(planes, o, nullptr);
   const std::vector<RoofPlaneHypothesis> input = *planes;
+  std::set<std::string> input_ids;
+  for (const RoofPlaneHypothesis& h : input) input_ids.insert(h.id);
   // The cuts made, by the id of the plane cut, and those undone.
   std::map<std::string, FallCut> made;
   std::set<std::string> undone;
@@ -661,9 +658,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
         continue;
       }
       const FallCut& c = it->second;
-      double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
-      for (const Eigen::Vector2d& x : h.patch)
-        a_lo = std::min(a_lo, c.across.dot(x)), a_hi = std::max(a_hi, c.across.dot(x));
+      const auto [a_lo, a_hi] = ConvexExtent(h.patch, c.across);
       std::vector<Ring2> pieces;
       if (c.lo - a_lo >= o.conflict_cut_min_width_m)
         pieces.push_back(ConvexSlab(h.patch, c.across, a_lo - 1, c.lo));
@@ -709,9 +704,7 @@ std::vector<std::string> ResolveConflicts(std::vector<RoofPlaneHypothesis>* plan
     }
     if (!changed && round < 8)
       for (FallCut& c : cuts)
-        if (!made.count(c.plane) && !undone.count(c.plane) &&
-            std::any_of(input.begin(), input.end(),
-                        [&](const RoofPlaneHypothesis& h) { return h.id == c.plane; })) {
+        if (!made.count(c.plane) && !undone.count(c.plane) && input_ids.count(c.plane)) {
           const std::string id = c.plane;
           made.emplace(id, std::move(c));
           changed = true;

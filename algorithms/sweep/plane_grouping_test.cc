@@ -648,10 +648,15 @@ TEST(PlaneGrouping, AFaceAcrossAPlanesDepthCutsItThere) {
   ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 1u);
   EXPECT_EQ(planes[0].id, "shed");
-  RoofPlaneHypothesis narrow_s = south, narrow_n = north;
-  for (RoofPlaneHypothesis* f : {&narrow_s, &narrow_n})
-    for (Eigen::Vector2d& x : f->patch) x.x() = x.x() == 6 ? 8 : 10;
-  planes = {shed, narrow_s, narrow_n};
+  // The gable's faces moved to x0..x1 along the row.
+  auto gable_at = [&](double x0, double x1) {
+    std::vector<RoofPlaneHypothesis> faces = {south, north};
+    for (RoofPlaneHypothesis& f : faces)
+      for (Eigen::Vector2d& x : f.patch) x.x() = x.x() == 6 ? x0 : x1;
+    return faces;
+  };
+  const std::vector<RoofPlaneHypothesis> narrow = gable_at(8, 10);
+  planes = {shed, narrow[0], narrow[1]};
   ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 1u);
   EXPECT_EQ(planes[0].id, "shed");
@@ -696,9 +701,8 @@ TEST(PlaneGrouping, AFaceAcrossAPlanesDepthCutsItThere) {
 
   // Nor is a piece narrower than 3 m kept beside the faces: the gable at
   // the row's end leaves one piece only.
-  for (RoofPlaneHypothesis* f : {&south, &north})
-    for (Eigen::Vector2d& x : f->patch) x.x() = x.x() == 6 ? 1 : 7;
-  planes = {shed, south, north};
+  const std::vector<RoofPlaneHypothesis> at_end = gable_at(1, 7);
+  planes = {shed, at_end[0], at_end[1]};
   ResolveConflicts(&planes, GroupingOptions{});
   ASSERT_EQ(planes.size(), 3u);
   EXPECT_EQ(planes[0].id, "shed");
