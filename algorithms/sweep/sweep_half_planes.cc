@@ -292,6 +292,11 @@ double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOption
   return std::max(o.candidate_floor_similarity, o.candidate_min_similarity * scale);
 }
 
+bool WantsWiderWindow(const std::vector<HalfPlane>& sides, const SweepOptions& o) {
+  return o.wide_ncc_radius > o.ncc_radius &&
+         CandidateThreshold(sides, o) < o.wide_window_below * o.candidate_min_similarity;
+}
+
 double ScoreThresholdAtImageQuality(double min_score, const std::vector<HalfPlane>& sides,
                                     const SweepOptions& o) {
   if (!(o.candidate_min_similarity > 0)) return min_score;

@@ -87,6 +87,10 @@ inline int SideOf(const Segment3& line, const Eigen::Vector2d& p) {
 // (SweepOptions::calibration_peak_ratio).
 double CandidateThreshold(const std::vector<HalfPlane>& sides, const SweepOptions& options);
 
+// True when these sides were swept from imagery noisy enough for the wider
+// correlation window (SweepOptions::wide_ncc_radius), with the narrower one.
+bool WantsWiderWindow(const std::vector<HalfPlane>& sides, const SweepOptions& options);
+
 // A correlation threshold set for clear images (VerifyOptions::min_score)
 // at the image quality of these sides: scaled by the square root of the
 // scale CandidateThreshold applies, since Sim is a mean of squared

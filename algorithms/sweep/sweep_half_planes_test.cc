@@ -104,12 +104,28 @@ TEST(SweepHalfPlanes, TheCandidateThresholdFallsWithTheNoise) {
   EXPECT_LT(scale, 1.0);
   EXPECT_NEAR(ScoreThresholdAtImageQuality(0.3, r, o), 0.3 * std::sqrt(scale), 1e-12);
   EXPECT_EQ(ScoreThresholdAtImageQuality(0.3, r, fixed), 0.3);
+  // Noisy enough for the wider window, which averages the noise over more
+  // pixels: the face's peak stands further above its profile (measured:
+  // 6.1 -> 8.3 times its median; Sim itself hardly moves, 0.094 -> 0.091),
+  // at the same angle, and the untextured face stays out.
+  EXPECT_TRUE(WantsWiderWindow(r, o));
+  SweepOptions wide = o;
+  wide.ncc_radius = o.wide_ncc_radius;
+  EXPECT_FALSE(WantsWiderWindow(r, wide));  // already wide
+  const auto w = Sweep(scene, block, wide, eaves);
+  EXPECT_GT(SideOf(w, 1).peak_ratio, 1.2 * face.peak_ratio);
+  EXPECT_NEAR(SideOf(w, 1).theta_deg, -30.0, 2.0);
+  EXPECT_FALSE(SideOf(w, -1).candidate);
+  SweepOptions never = o;
+  never.wide_ncc_radius = o.ncc_radius;
+  EXPECT_FALSE(WantsWiderWindow(r, never));
   // At the default noise the thresholds stay the fixed ones.
   scene.noise_sigma = TestScene().noise_sigma;
   const auto clean = Sweep(scene, block, o, eaves);
   EXPECT_TRUE(SideOf(clean, 1).accepted);
   EXPECT_FALSE(SideOf(clean, -1).candidate);
   EXPECT_EQ(ScoreThresholdAtImageQuality(0.3, clean, o), 0.3);
+  EXPECT_FALSE(WantsWiderWindow(clean, o));
 }
 
 // An untextured face gives no reliable maximum. The faces run on beyond the

@@ -441,6 +441,16 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
   };
   std::vector<HalfPlane> hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep",
                                      StrFormat("%d lines near the ground", near_ground), nullptr);
+  // Noisy imagery: the sweep again with the wider correlation window
+  // (SweepOptions::wide_ncc_radius), and every later sweep with it too.
+  if (WantsWiderWindow(hps, r.sweep)) {
+    t0 = Clock::now();
+    r.sweep.ncc_radius = r.sweep.wide_ncc_radius;
+    hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep, wider window",
+                StrFormat("%d x %d px on noisy images", 2 * r.sweep.ncc_radius + 1,
+                          2 * r.sweep.ncc_radius + 1),
+                nullptr);
+  }
   if (r.verify_follows_sweep && !r.stop_after_sweep)
     r.verify.min_score = ScoreThresholdAtImageQuality(r.verify.min_score, hps, r.sweep);
 
