@@ -439,17 +439,19 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
          Since(t0)});
     return h;
   };
-  std::vector<HalfPlane> hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep",
+  const double sweep_to = two_passes ? 0.6 : 0.95;
+  std::vector<HalfPlane> hps = sweep(lines, 0.35, sweep_to, "half-plane sweep",
                                      StrFormat("%d lines near the ground", near_ground), nullptr);
   // Noisy imagery: the sweep again with the wider correlation window
   // (SweepOptions::wide_ncc_radius), and every later sweep with it too.
+  // The progress runs over the same range again (GDAL's line stays put
+  // until it passes where it stood).
   if (WantsWiderWindow(hps, r.sweep)) {
     t0 = Clock::now();
     r.sweep.ncc_radius = r.sweep.wide_ncc_radius;
-    hps = sweep(lines, 0.35, two_passes ? 0.6 : 0.95, "half-plane sweep, wider window",
-                StrFormat("%d x %d px on noisy images", 2 * r.sweep.ncc_radius + 1,
-                          2 * r.sweep.ncc_radius + 1),
-                nullptr);
+    const int w = 2 * r.sweep.ncc_radius + 1;
+    hps = sweep(lines, 0.35, sweep_to, "half-plane sweep, wider window",
+                StrFormat("%d x %d px on noisy images", w, w), nullptr);
   }
   if (r.verify_follows_sweep && !r.stop_after_sweep)
     r.verify.min_score = ScoreThresholdAtImageQuality(r.verify.min_score, hps, r.sweep);
