@@ -10,7 +10,7 @@ namespace roofsweep::cli {
 namespace {
 
 // Options shared by `run` and `sweep`, with the papers' defaults.
-void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
+void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags, std::string* window) {
   flags->Add(p, &r.match, &r.edges);
   p.Option("-theta_min", &r.sweep.theta_min_deg, "DEG", "swept angle range start (default -75)")
       .Option("-theta_max", &r.sweep.theta_max_deg, "DEG", "swept angle range end (default 75)")
@@ -20,6 +20,10 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
               "... and |Sim''| >= C per rad^2 (default 4.0)")
       .Option("-band_width", &r.sweep.band_width_px, "PX",
               "neighbourhood of a line side in the reference view (default 100)")
+      .Option("-ncc_window", window, "auto|PX",
+              "side of the sweep's correlation window: auto (default) sweeps with 7 and again "
+              "with 11 where the block's images correlate poorly (haze, blur, noise); an odd PX "
+              "(3-31) fixes it, so that the tiles of a tiled run sweep alike")
       .Option(
           "-verify_score", &r.verify.min_score, "S",
           "a roof plane's patch must correlate with mean Cor+ >= S over the views (default 0.3; "
@@ -28,6 +32,28 @@ void AddProcessingOptions(ArgParser& p, RunRequest& r, MatchFlags* flags) {
               "... and beat the plane moved up and down by S (default 0.1)")
       .Option("-verify_samples", &r.verify.min_samples, "N",
               "... over at least N textured samples (default 32)");
+}
+
+// -ncc_window: "auto" keeps the sweep's choice by the imagery
+// (SweepOptions::wide_ncc_radius); a size fixes the window and turns the
+// choice off. Each tile of a tiled run measures its own images, and a tile
+// of clean roofs beside a hazy one would otherwise sweep with the other
+// window.
+void ApplyWindowOption(const ArgParser& p, const std::string& window, SweepOptions* sweep) {
+  if (window.empty() || window == "auto") return;
+  int px = 0;
+  size_t used = 0;
+  try {
+    px = std::stoi(window, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != window.size() || px < 3 || px > 31 || px % 2 == 0)
+    throw UsageError(
+        "Option -ncc_window expects auto or an odd size from 3 to 31 px, not '" + window + "'",
+        p.Synopsis());
+  sweep->ncc_radius = px / 2;
+  sweep->wide_ncc_radius = 0;
 }
 
 int Run(const std::vector<std::string>& args, Context& ctx) {
@@ -162,13 +188,15 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
             "face fitted twice), even where the images confirm the merged plane; nor keep only "
             "the better of two such planes that meet in a concave crease and are not one face");
   MatchFlags flags;
-  AddProcessingOptions(p, r, &flags);
+  std::string window;
+  AddProcessingOptions(p, r, &flags, &window);
   p.Example("roofsweep run sim/block.json -o buildings.gml")
       .Example("roofsweep run out/block -o b.gpkg -lines3d l.gpkg -report run.json -overwrite")
       .Example("roofsweep run out/block -o b.city.json -footprints out/block/footprints.gpkg")
       .Example("roofsweep run city/block.json -aoi 391800,5819000,392000,5819200 -o t.gml");
   if (!p.Parse(args)) return 0;
   r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
+  ApplyWindowOption(p, window, &r.sweep);
   if (!(r.min_edge_support >= 0 && r.min_edge_support <= 1))
     throw UsageError("Option -min_edge_support expects a share from 0 to 1", p.Synopsis());
   if (!(r.min_edge_support_unlined >= 0 && r.min_edge_support_unlined <= 1))
@@ -224,11 +252,13 @@ int Sweep(const std::vector<std::string>& args, Context& ctx) {
               "views and image windows that see it and its buffer, as `run -aoi` does")
       .Option("-tile_buffer", &r.tile_buffer_m, "M", "sweep this far around the tile (default 30)");
   MatchFlags flags;
-  AddProcessingOptions(p, r, &flags);
+  std::string window;
+  AddProcessingOptions(p, r, &flags, &window);
   p.Example("roofsweep sweep out/block -o half_planes.gpkg");
   if (!p.Parse(args)) return 0;
   flags.Apply(p);
   r.aoi = ParseTileOptions(p, aoi, r.tile_buffer_m);
+  ApplyWindowOption(p, window, &r.sweep);
   const RunSummary s = RunPipeline(r, *ctx.progress);
   if (!ctx.quiet) {
     std::cout << FormatRunSummary(s);

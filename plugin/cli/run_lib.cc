@@ -440,8 +440,10 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
     return h;
   };
   const double sweep_to = two_passes ? 0.6 : 0.95;
-  std::vector<HalfPlane> hps = sweep(lines, 0.35, sweep_to, "half-plane sweep",
-                                     StrFormat("%d lines near the ground", near_ground), nullptr);
+  const int w0 = 2 * r.sweep.ncc_radius + 1;
+  std::vector<HalfPlane> hps =
+      sweep(lines, 0.35, sweep_to, "half-plane sweep",
+            StrFormat("%d lines near the ground, %d x %d px window", near_ground, w0, w0), nullptr);
   // Noisy imagery: the sweep again with the wider correlation window
   // (SweepOptions::wide_ncc_radius), and every later sweep with it too.
   // The progress runs over the same range again (GDAL's line stays put

@@ -165,6 +165,32 @@ assert cand >= acc and unset == 0, (cand, acc, unset)
 PY
 }
 
+# -ncc_window: on this clean block "auto" is the 7 x 7 window, 11 changes
+# the similarities and the stage table says which window ran; a window
+# without a centre pixel is refused before any work.
+test_sweep_window_option() {
+  small_block || return
+  expect_ok sweep_window_auto sweep "$SIM" -o "$WORK/w_auto.gpkg" || return
+  grep -q "7 x 7 px window" "$WORK/stdout.txt" && pass sweep_window_auto_is_7 \
+    || fail sweep_window_auto_is_7 "$(grep '^half-plane sweep' "$WORK/stdout.txt")"
+  expect_ok sweep_window_7 sweep "$SIM" -o "$WORK/w_7.gpkg" -ncc_window 7 || return
+  expect_ok sweep_window_11 sweep "$SIM" -o "$WORK/w_11.gpkg" -ncc_window 11 || return
+  grep -q "11 x 11 px window" "$WORK/stdout.txt" && pass sweep_window_11_named \
+    || fail sweep_window_11_named "$(grep '^half-plane sweep' "$WORK/stdout.txt")"
+  python3 - "$WORK"/w_auto.gpkg "$WORK"/w_7.gpkg "$WORK"/w_11.gpkg <<'PY' 2>"$WORK/py.txt" \
+    && pass sweep_window_used || fail sweep_window_used "$(tail -1 "$WORK/py.txt")"
+import sqlite3, sys
+rows = [sqlite3.connect(f).execute(
+    "select line, side, similarity, theta_deg from half_planes order by line, side").fetchall()
+    for f in sys.argv[1:]]
+assert rows[0] and rows[0] == rows[1], "auto and 7 differ on a clean block"
+assert [r[:2] for r in rows[2]] == [r[:2] for r in rows[0]], "11 swept other sides"
+assert rows[2] != rows[0], "11 gave the same similarities as 7"
+PY
+  expect_fail sweep_window_even "$WORK/w_8.gpkg" "ncc_window.*odd" -- sweep "$SIM" -o "$WORK/w_8.gpkg" -ncc_window 8
+  expect_fail run_window_word "$WORK/w_x.gpkg" "ncc_window.*'wide'" -- run "$SIM" -o "$WORK/w_x.gpkg" -ncc_window wide
+}
+
 # A block on sloping or hilly ground: the simulator writes a DTM and names it
 # in the manifest, the truth's wall feet lie on it, and every building run
 # builds stands on the lowest DTM height under its ground surface.
