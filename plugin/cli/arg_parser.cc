@@ -258,8 +258,11 @@ void ArgParser::ApplyOptionsFile(const std::string& path) {
           o->set(value.dump());
           break;
         case Kind::kString:
-          if (!value.is_string()) fail(key, "expects a string, got " + value.dump());
-          o->set(value.get<std::string>());
+          // A number is its text: "-ncc_window auto|PX" is written 11 in
+          // JSON as naturally as "auto".
+          if (!value.is_string() && !value.is_number())
+            fail(key, "expects a string, got " + value.dump());
+          o->set(scalar_text(value));
           break;
         case Kind::kRepeated:
           if (value.is_string()) {

@@ -134,6 +134,10 @@ TEST(ArgParser, OptionsFileAppliesAndCommandLineWins) {
   ASSERT_TRUE(
       h.p.Parse({"-options", WriteJson("obj.json", R"({"lco": {"FID": "x", "A": 2}})"), "b"}));
   EXPECT_EQ(h.lco, (std::vector<std::string>{"A=2", "FID=x"}));
+  // A string option given a number takes its text ("ncc_window": 11).
+  OptionsFileFixture k;
+  ASSERT_TRUE(k.p.Parse({"-options", WriteJson("num.json", R"({"of": 11})"), "b"}));
+  EXPECT_EQ(k.of, "11");
 }
 
 TEST(ArgParser, OptionsFileErrorsNameFileAndPointer) {
@@ -154,6 +158,8 @@ TEST(ArgParser, OptionsFileErrorsNameFileAndPointer) {
   EXPECT_NE(m.find("whole.json: /min-length: Option -min-length expects a whole number"),
             std::string::npos)
       << m;
+  m = message("str.json", R"({"of": true})");
+  EXPECT_NE(m.find("str.json: /of: expects a string, got true"), std::string::npos) << m;
   m = message("item.json", R"({"lco": ["FID=x", 3]})");
   EXPECT_NE(m.find("item.json: /lco/1: expects a string"), std::string::npos) << m;
   m = message("kv.json", R"({"lco": ["FID"]})");
