@@ -256,6 +256,47 @@ std::vector<std::pair<Eigen::Vector2d, double>> CutDirections(
   return out;
 }
 
+// The position down the fall line g where face p is cut at the foot of
+// its hip, where another face's eave ends (EaveSearchOptions::hip_corner_m),
+// if there is one.
+std::optional<double> HipCornerCut(const RoofPlaneHypothesis& p, const Eigen::Vector2d& g,
+                                   const std::vector<RoofPlaneHypothesis>& planes,
+                                   const EaveSearchOptions& o) {
+  if (!(o.hip_corner_m > 0)) return std::nullopt;
+  double s_low = -1e300;
+  Eigen::Vector2d foot = Eigen::Vector2d::Zero(), up = Eigen::Vector2d::Zero();
+  for (const auto& l : p.lines_xy)
+    for (int k = 0; k < 2; ++k)
+      if (g.dot(l[k]) > s_low) s_low = g.dot(l[k]), foot = l[k], up = l[1 - k] - l[k];
+  if (!(s_low > -1e300) || up.norm() < o.min_edge_m) return std::nullopt;
+  const double c = -g.dot(up) / up.norm();
+  if (c < o.hip_min_cos || c > o.hip_max_cos) return std::nullopt;
+  const double z = PlaneZ(p.plane, foot.x(), foot.y());
+  for (const RoofPlaneHypothesis& q : planes) {
+    if (&q == &p) continue;
+    const std::optional<Eigen::Vector2d> fall_q = DownTheFallLine(q, o.min_slope_deg);
+    if (!fall_q || fall_q->dot(g) > std::cos(30 * kDegToRad)) continue;
+    const Eigen::Vector2d gq = *fall_q;
+    double q_low = -1e300;
+    for (const auto& l : q.lines_xy) q_low = std::max({q_low, gq.dot(l[0]), gq.dot(l[1])});
+    for (const auto& l : q.lines_xy) {
+      const Eigen::Vector2d d = l[1] - l[0];
+      const double len = d.norm();
+      if (len < o.min_length_m ||
+          std::abs(gq.dot(d)) > std::sin(o.max_angle_deg * kDegToRad) * len ||
+          std::min(gq.dot(l[0]), gq.dot(l[1])) < q_low - o.level_line_m)
+        continue;
+      for (int k = 0; k < 2; ++k) {
+        const Eigen::Vector2d back = l[1 - k] - l[k];
+        if ((l[k] - foot).norm() <= o.hip_corner_m && -g.dot(back) >= std::sqrt(0.5) * len &&
+            std::abs(PlaneZ(q.plane, l[k].x(), l[k].y()) - z) <= o.hip_corner_dz_m)
+          return s_low;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<FaceEave> FindEaves(const Block& block, const std::vector<Segments2D>& segments,
@@ -329,6 +370,34 @@ int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes, const EaveS
     if (clipped.size() < 3 || !(removed > 1e-3)) continue;
     std::snprintf(buf, sizeof buf, "%s: %spatch cut by %.1f m2 to its border lines", p.id.c_str(),
                   fall ? "" : "flat ", removed);
+    if (log) log->push_back(buf);
+    p.patch = std::move(clipped);
+    ++cut;
+  }
+  return cut;
+}
+
+int CutFacesAtHipFeet(std::vector<RoofPlaneHypothesis>* planes, const EaveSearchOptions& o,
+                      std::vector<std::string>* log) {
+  // Decided on the patches as they come, then applied: a cut face's
+  // neighbours are judged by the same planes and lines either way.
+  std::vector<std::optional<double>> at(planes->size());
+  for (size_t i = 0; i < planes->size(); ++i) {
+    const RoofPlaneHypothesis& p = (*planes)[i];
+    if (const auto fall = DownTheFallLine(p, o.min_slope_deg))
+      at[i] = HipCornerCut(p, *fall, *planes, o);
+  }
+  int cut = 0;
+  char buf[200];
+  for (size_t i = 0; i < planes->size(); ++i) {
+    if (!at[i]) continue;
+    RoofPlaneHypothesis& p = (*planes)[i];
+    const Eigen::Vector2d g = *DownTheFallLine(p, o.min_slope_deg);
+    Ring2 clipped = ClipHalfPlane(p.patch, g.x(), g.y(), -(*at[i] + o.clip_beyond_m));
+    const double removed = Area(p.patch) - Area(clipped);
+    if (clipped.size() < 3 || !(removed > 1e-3)) continue;
+    std::snprintf(buf, sizeof buf, "%s: patch cut by %.1f m2 at the foot of its hip", p.id.c_str(),
+                  removed);
     if (log) log->push_back(buf);
     p.patch = std::move(clipped);
     ++cut;

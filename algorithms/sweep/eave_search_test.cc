@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "algorithms/buildings/convex_polygon2.h"
 #include "algorithms/buildings/polygon2.h"
@@ -306,6 +307,73 @@ TEST(ClipFacesAtBorderLines, ALevelLineWithoutDepthAboveItCutsNothing) {
   o.clip_min_depth_m = 0.3;
   EXPECT_EQ(ClipFacesAtBorderLines(&s.planes, o), 1);
   for (const Eigen::Vector2d& q : s.planes[0].patch) EXPECT_LE(q.y(), 0.7 + 1e-9);
+}
+
+// The north-east corner of a hipped roof: the north face (40 degrees,
+// ridge along x at y = 0 and z = 10) found from its hip alone, (5, 0) up
+// at the ridge's end to (10, 5) at the eaves' corner, its patch the
+// sweep's strip past the corner; the east face found with its eave along
+// x = 10, ending at the corner.
+struct HipCorner {
+  std::vector<RoofPlaneHypothesis> planes;
+  HipCorner() {
+    RoofPlaneHypothesis north = TestPlane(SlopedPlane({0, 0, 10}, 40, 90),
+                                          {{-5, 0}, {5, 0}, {10, 5}, {9, 7}, {-5, 7}}, "north");
+    north.lines_xy = {Line2{Eigen::Vector2d(5, 0), Eigen::Vector2d(10, 5)}};
+    north.lines = 1;
+    RoofPlaneHypothesis east =
+        TestPlane(SlopedPlane({5, 0, 10}, 40, 0), {{5, 0}, {10, 5}, {10, -5}}, "east");
+    east.lines_xy = {Line2{Eigen::Vector2d(10, -5), Eigen::Vector2d(10, 5)},
+                     Line2{Eigen::Vector2d(5, 0), Eigen::Vector2d(10, 5)}};
+    east.lines = 2;
+    planes = {north, east};
+  }
+  double MaxY() const {
+    double y = -1e300;
+    for (const Eigen::Vector2d& q : planes[0].patch) y = std::max(y, q.y());
+    return y;
+  }
+};
+
+TEST(CutFacesAtHipFeet, AFaceEndsAtTheFootOfItsHipWhereTheNextFacesEaveEnds) {
+  HipCorner s;
+  std::vector<std::string> log;
+  EXPECT_EQ(CutFacesAtHipFeet(&s.planes, {}, &log), 1);
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_NE(log[0].find("north: patch cut by 24.5 m2 at the foot of its hip"), std::string::npos)
+      << log[0];
+  EXPECT_NEAR(s.MaxY(), 5.3, 1e-9);
+  // The east face has its eave: nothing past it to cut.
+  EXPECT_EQ(s.planes[1].patch, HipCorner().planes[1].patch);
+  // Off: the strip stays.
+  HipCorner off;
+  EaveSearchOptions o;
+  o.hip_corner_m = 0;
+  EXPECT_EQ(CutFacesAtHipFeet(&off.planes, o), 0);
+  EXPECT_NEAR(off.MaxY(), 7, 1e-9);
+}
+
+TEST(CutFacesAtHipFeet, OnlyAnEaveEndingAtTheHipsFootAtItsHeightBackUpTheFaceCuts) {
+  const auto cuts = [](const std::function<void(HipCorner*)>& change) {
+    HipCorner s;
+    change(&s);
+    return CutFacesAtHipFeet(&s.planes) > 0 && s.MaxY() < 6;
+  };
+  EXPECT_TRUE(cuts([](HipCorner*) {}));
+  // The eave stops 1 m short of the corner.
+  EXPECT_FALSE(cuts([](HipCorner* s) { s->planes[1].lines_xy[0][1] = {10, 4}; }));
+  // The other face lies 0.5 m higher there (a step, no hip).
+  EXPECT_FALSE(cuts([](HipCorner* s) { s->planes[1].plane[3] -= 0.5 * s->planes[1].plane[2]; }));
+  // The eave runs on down this face's slope from the foot: a valley's
+  // foot in a concave corner, which this face may pass.
+  EXPECT_FALSE(cuts([](HipCorner* s) { s->planes[1].lines_xy[0] = {{{10, 15}, {10, 5}}}; }));
+  // A level line above the other face's lowest (a course of tiles) is no eave.
+  EXPECT_FALSE(cuts([](HipCorner* s) {
+    s->planes[1].lines_xy.push_back(Line2{Eigen::Vector2d(11, -5), Eigen::Vector2d(11, 0)});
+  }));
+  // This face's lowest line runs along its fall line: a verge, whose foot
+  // is no corner of the eaves.
+  EXPECT_FALSE(cuts([](HipCorner* s) { s->planes[0].lines_xy[0] = {{{10, 0}, {10, 5}}}; }));
 }
 
 }  // namespace

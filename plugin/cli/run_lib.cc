@@ -1083,6 +1083,15 @@ RunSummary RunPipeline(const RunRequest& request, Progress& progress) {
          Since(t0)});
   }
 
+  // Faces found from a hip run on past the corner of the eaves where the
+  // hip ends; cut there once the conflicts are settled (CutFacesAtHipFeet).
+  if (r.border_clip) {
+    t0 = Clock::now();
+    const int cut = CutFacesAtHipFeet(&roof_planes, r.eaves);
+    out.stages.push_back({"faces cut at the feet of their hips",
+                          StrFormat("%d of %zu patches cut", cut, roof_planes.size()), Since(t0)});
+  }
+
   t0 = Clock::now();
   AssemblyResult assembled = AssembleBuildings(roof_planes, block.ground, r.assembly, footprints);
   const double assembly_seconds = Since(t0);

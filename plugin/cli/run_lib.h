@@ -160,7 +160,7 @@ struct RunRequest {
   // A sloped face whose patch stops short of its eave grows to the eave
   // that image segments lifted onto its plane show (FindEaves).
   bool eave_search = true;
-  bool border_clip = true;  // ClipFacesAtBorderLines
+  bool border_clip = true;  // ClipFacesAtBorderLines, CutFacesAtHipFeet
   EaveSearchOptions eaves;
   // Without footprints: terraced houses are cut apart where their shared
   // roof changes colour across its whole depth (FindColourBreaks), as
