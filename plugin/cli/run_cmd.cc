@@ -139,8 +139,8 @@ int Run(const std::vector<std::string>& args, Context& ctx) {
       .Flag("-no_border_clip", &no_border_clip,
             "let a face's patch run on past the eave or verge line that bounds its lines (a "
             "hip's or verge's sweep strip over the wall and the ground), or a flat roof's past "
-            "its edge line (over a lower neighbour); nor cut a face found from a hip at the "
-            "hip's foot, where the next face's eave ends")
+            "its edge line (over a lower neighbour); and do not cut a face found from a hip at "
+            "the hip's foot, where the next face's eave ends")
       .Flag("-no_eave_search", &no_eaves,
             "do not grow a sloped face whose patch stops short of its eave to the level line "
             "of its plane where image segments of two views lifted onto the plane agree")
