@@ -163,9 +163,8 @@ int ClipFacesAtBorderLines(std::vector<RoofPlaneHypothesis>* planes,
 // hip has its eave through the hip's foot when another face's eave ends
 // there (EaveSearchOptions::hip_corner_m): its patch is cut clip_beyond_m
 // past that level line. Run on the planes that the assembly takes, after
-// the conflicts: a patch cut earlier changes how far its neighbours'
-// patches lie across the line where they meet, and on `realistic-1` a
-// pavilion roof's west face lost to its north face that way with
+// the conflicts: cut before the later conflicts (in ClipFacesAtBorderLines),
+// a pavilion roof's north face on `realistic-1` won over its west face with
 // footprints on every matching seed. Returns how many patches were cut;
 // `log` (optional) gets one line per cut.
 int CutFacesAtHipFeet(std::vector<RoofPlaneHypothesis>* planes,
