@@ -58,6 +58,20 @@ bool LineAlongEnd(const RoofPlaneHypothesis& p, const Eigen::Vector2d& e, double
   return false;
 }
 
+// The lowest point of a face's lines down the fall line g: its position
+// s, the point, and the line's other end seen from it (up the face).
+struct LowestEnd {
+  double s = -1e300;
+  Eigen::Vector2d foot = Eigen::Vector2d::Zero(), up = Eigen::Vector2d::Zero();
+};
+std::optional<LowestEnd> LowestLineEnd(const RoofPlaneHypothesis& p, const Eigen::Vector2d& g) {
+  std::optional<LowestEnd> low;
+  for (const auto& l : p.lines_xy)
+    for (int k = 0; k < 2; ++k)
+      if (!low || g.dot(l[k]) > low->s) low = LowestEnd{g.dot(l[k]), l[k], l[1 - k] - l[k]};
+  return low;
+}
+
 std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segments2D>& segments,
                                    const std::vector<SegmentIndex>& index,
                                    const RoofPlaneHypothesis& p, const EaveSearchOptions& o) {
@@ -65,21 +79,19 @@ std::optional<FaceEave> SearchFace(const Block& block, const std::vector<Segment
   if (!fall) return std::nullopt;
   const Eigen::Vector2d g = *fall;         // down the fall line
   const Eigen::Vector2d t(-g.y(), g.x());  // level along the face
-  double s_low = -1e300, u_min = 1e300, u_max = -1e300;
+  double u_min = 1e300, u_max = -1e300;
   for (const Eigen::Vector2d& q : p.patch) {
     u_min = std::min(u_min, t.dot(q));
     u_max = std::max(u_max, t.dot(q));
   }
   // From the lowest point of its lines: a patch may reach past them (the
   // sweep's band, the hull of a stray line) and over the ground.
-  const std::array<Eigen::Vector2d, 2>* lowest = nullptr;
-  for (const auto& l : p.lines_xy)
-    for (const Eigen::Vector2d& q : l)
-      if (g.dot(q) > s_low) s_low = g.dot(q), lowest = &l;
+  const std::optional<LowestEnd> lowest = LowestLineEnd(p, g);
   if (!lowest) return std::nullopt;
+  const double s_low = lowest->s;
   // That point must be the lower end of a verge or a hip, where an eave
   // begins: a line down the face, of some length.
-  const Eigen::Vector2d down = (*lowest)[1] - (*lowest)[0];
+  const Eigen::Vector2d down = lowest->up;
   if (down.norm() < o.min_edge_m || std::abs(g.dot(down)) < o.min_edge_cos * down.norm())
     return std::nullopt;
   // A face whose lowest line is level already has its eave: beyond it lie
@@ -263,12 +275,10 @@ std::optional<double> HipCornerCut(const RoofPlaneHypothesis& p, const Eigen::Ve
                                    const std::vector<RoofPlaneHypothesis>& planes,
                                    const EaveSearchOptions& o) {
   if (!(o.hip_corner_m > 0)) return std::nullopt;
-  double s_low = -1e300;
-  Eigen::Vector2d foot = Eigen::Vector2d::Zero(), up = Eigen::Vector2d::Zero();
-  for (const auto& l : p.lines_xy)
-    for (int k = 0; k < 2; ++k)
-      if (g.dot(l[k]) > s_low) s_low = g.dot(l[k]), foot = l[k], up = l[1 - k] - l[k];
-  if (!(s_low > -1e300) || up.norm() < o.min_edge_m) return std::nullopt;
+  const std::optional<LowestEnd> low = LowestLineEnd(p, g);
+  if (!low || low->up.norm() < o.min_edge_m) return std::nullopt;
+  const double s_low = low->s;
+  const Eigen::Vector2d foot = low->foot, up = low->up;
   const double c = -g.dot(up) / up.norm();
   if (c < o.hip_min_cos || c > o.hip_max_cos) return std::nullopt;
   const double z = PlaneZ(p.plane, foot.x(), foot.y());
@@ -277,8 +287,9 @@ std::optional<double> HipCornerCut(const RoofPlaneHypothesis& p, const Eigen::Ve
     const std::optional<Eigen::Vector2d> fall_q = DownTheFallLine(q, o.min_slope_deg);
     if (!fall_q || fall_q->dot(g) > std::cos(30 * kDegToRad)) continue;
     const Eigen::Vector2d gq = *fall_q;
-    double q_low = -1e300;
-    for (const auto& l : q.lines_xy) q_low = std::max({q_low, gq.dot(l[0]), gq.dot(l[1])});
+    const std::optional<LowestEnd> q_lowest = LowestLineEnd(q, gq);
+    if (!q_lowest) continue;
+    const double q_low = q_lowest->s;
     for (const auto& l : q.lines_xy) {
       const Eigen::Vector2d d = l[1] - l[0];
       const double len = d.norm();
@@ -381,19 +392,20 @@ int CutFacesAtHipFeet(std::vector<RoofPlaneHypothesis>* planes, const EaveSearch
                       std::vector<std::string>* log) {
   // Decided on the patches as they come, then applied: a cut face's
   // neighbours are judged by the same planes and lines either way.
-  std::vector<std::optional<double>> at(planes->size());
+  // Per plane: down its fall line, and the position of the cut there.
+  std::vector<std::optional<std::pair<Eigen::Vector2d, double>>> at(planes->size());
   for (size_t i = 0; i < planes->size(); ++i) {
     const RoofPlaneHypothesis& p = (*planes)[i];
     if (const auto fall = DownTheFallLine(p, o.min_slope_deg))
-      at[i] = HipCornerCut(p, *fall, *planes, o);
+      if (const auto s = HipCornerCut(p, *fall, *planes, o)) at[i] = std::make_pair(*fall, *s);
   }
   int cut = 0;
   char buf[200];
   for (size_t i = 0; i < planes->size(); ++i) {
     if (!at[i]) continue;
     RoofPlaneHypothesis& p = (*planes)[i];
-    const Eigen::Vector2d g = *DownTheFallLine(p, o.min_slope_deg);
-    Ring2 clipped = ClipHalfPlane(p.patch, g.x(), g.y(), -(*at[i] + o.clip_beyond_m));
+    const auto& [g, s] = *at[i];
+    Ring2 clipped = ClipHalfPlane(p.patch, g.x(), g.y(), -(s + o.clip_beyond_m));
     const double removed = Area(p.patch) - Area(clipped);
     if (clipped.size() < 3 || !(removed > 1e-3)) continue;
     std::snprintf(buf, sizeof buf, "%s: patch cut by %.1f m2 at the foot of its hip", p.id.c_str(),
